@@ -1,0 +1,17 @@
+#pragma once
+// Each subcommand registers its flags on the shared CLI11 app and returns the
+// action to run when it was chosen. Actions return the process exit code.
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace auv::cli {
+
+using Action = std::function<int()>;
+struct Command {
+  CLI::App* sub = nullptr;
+  Action run;
+};
+
+Command addVehiclesCommand(CLI::App& app);
+
+}  // namespace auv::cli

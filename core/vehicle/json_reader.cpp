@@ -1,0 +1,140 @@
+#include "vehicle/json_reader.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace auv {
+
+JsonReader::JsonReader(const nlohmann::json& node, std::string file, std::string path)
+    : node_(node), file_(std::move(file)), path_(std::move(path)) {}
+
+nlohmann::json JsonReader::parseFile(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    throw InputError("", "cannot open file '" + file + "'",
+                     "check the path and that the file is readable");
+  }
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parseText(ss.str(), file);
+}
+
+nlohmann::json JsonReader::parseText(const std::string& text, const std::string& file) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // Turn the byte offset into line/column for the operator's editor.
+    long line = 1, col = 1;
+    const std::size_t stop = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+    for (std::size_t i = 0; i < stop; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        col = 1;
+      } else {
+        ++col;
+      }
+    }
+    std::string what = e.what();
+    const auto pos = what.rfind(": ");
+    if (pos != std::string::npos) what = what.substr(pos + 2);
+    throw InputError("", "invalid JSON (" + what + ")",
+                     "fix the syntax at this position", {file, line, col});
+  }
+}
+
+std::string JsonReader::fieldPath(const std::string& key) const {
+  if (path_.empty()) return key;
+  if (!key.empty() && key.front() == '[') return path_ + key;
+  return path_ + "." + key;
+}
+
+void JsonReader::fail(const std::string& key, const std::string& problem,
+                      const std::string& fix) const {
+  throw InputError(fieldPath(key), problem, fix, {file_, 0, 0});
+}
+
+bool JsonReader::has(const std::string& key) const {
+  return node_.is_object() && node_.contains(key) && !node_.at(key).is_null();
+}
+
+const nlohmann::json& JsonReader::at(const std::string& key) const {
+  if (!node_.is_object()) fail("", "expected a JSON object", "wrap the fields in { }");
+  if (!has(key)) fail(key, "missing required field", "add \"" + key + "\" to the file");
+  return node_.at(key);
+}
+
+JsonReader JsonReader::child(const std::string& key) const {
+  const auto& n = at(key);
+  if (!n.is_object()) fail(key, "expected an object", "write it as { ... }");
+  return JsonReader(n, file_, fieldPath(key));
+}
+
+std::optional<JsonReader> JsonReader::optionalChild(const std::string& key) const {
+  if (!has(key)) return std::nullopt;
+  return child(key);
+}
+
+std::vector<JsonReader> JsonReader::array(const std::string& key) const {
+  const auto& n = at(key);
+  if (!n.is_array()) fail(key, "expected an array", "write it as [ {...}, ... ]");
+  std::vector<JsonReader> out;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    out.emplace_back(n[i], file_, fieldPath(key) + "[" + std::to_string(i) + "]");
+    if (!n[i].is_object()) out.back().fail("", "expected an object", "write it as { ... }");
+  }
+  return out;
+}
+
+double JsonReader::number(const std::string& key) const {
+  const auto& n = at(key);
+  if (!n.is_number()) fail(key, "expected a number, got " + n.dump(), "write a plain number such as 12.5");
+  const double v = n.get<double>();
+  if (!std::isfinite(v)) fail(key, "value is not finite", "write a finite number");
+  return v;
+}
+
+double JsonReader::number(const std::string& key, double fallback) const {
+  return has(key) ? number(key) : fallback;
+}
+
+double JsonReader::numberIn(const std::string& key, double lo, double hi) const {
+  const double v = number(key);
+  if (v < lo || v > hi) {
+    std::ostringstream range;
+    range << "use a value between " << lo << " and " << hi;
+    std::ostringstream got;
+    got << "value " << v << " is out of range";
+    fail(key, got.str(), range.str());
+  }
+  return v;
+}
+
+double JsonReader::numberIn(const std::string& key, double lo, double hi, double fallback) const {
+  return has(key) ? numberIn(key, lo, hi) : fallback;
+}
+
+std::vector<double> JsonReader::numbers(const std::string& key) const {
+  const auto& n = at(key);
+  if (!n.is_array()) fail(key, "expected an array of numbers", "write it as [1.2, 2.4]");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    if (!n[i].is_number()) {
+      fail(key + "[" + std::to_string(i) + "]", "expected a number", "write a plain number");
+    }
+    out.push_back(n[i].get<double>());
+  }
+  return out;
+}
+
+std::string JsonReader::text(const std::string& key) const {
+  const auto& n = at(key);
+  if (!n.is_string()) fail(key, "expected a string", "write it in double quotes");
+  return n.get<std::string>();
+}
+
+std::string JsonReader::text(const std::string& key, const std::string& fallback) const {
+  return has(key) ? text(key) : fallback;
+}
+
+}  // namespace auv
