@@ -1,0 +1,59 @@
+#include "missionlog/log_reader.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+#include "common/input_error.h"
+#include "missionlog/interchange_csv.h"
+
+namespace auv {
+
+LogReaderRegistry LogReaderRegistry::withBuiltinReaders() {
+  LogReaderRegistry r;
+  r.add(std::make_unique<InterchangeCsvReader>());
+  return r;
+}
+
+void LogReaderRegistry::add(std::unique_ptr<LogReader> reader) {
+  if (reader) readers_.push_back(std::move(reader));
+}
+
+std::string readFirstBytes(const std::filesystem::path& path, std::size_t maxBytes) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError("log", std::string("cannot open file: ") + std::strerror(errno),
+                     "check the path and the file permissions", {path.string(), 0, 0});
+  std::string s(maxBytes, '\0');
+  in.read(s.data(), static_cast<std::streamsize>(maxBytes));
+  s.resize(static_cast<std::size_t>(in.gcount()));
+  return s;
+}
+
+const LogReader* LogReaderRegistry::find(const std::filesystem::path& path) const {
+  const std::string head = readFirstBytes(path);
+  for (const auto& r : readers_)
+    if (r->canRead(path, head)) return r.get();
+  return nullptr;
+}
+
+std::vector<std::string> LogReaderRegistry::formatNames() const {
+  std::vector<std::string> n;
+  for (const auto& r : readers_) n.push_back(r->formatName());
+  return n;
+}
+
+MissionLog LogReaderRegistry::read(const std::filesystem::path& path, const ReadOptions& options,
+                                   ReadReport& report) const {
+  const LogReader* r = find(path);
+  if (!r) {
+    std::string names;
+    for (const auto& n : formatNames()) names += (names.empty() ? "" : "; ") + n;
+    throw InputError("log", "no reader recognises this file's content",
+                     "convert it to the mission-log CSV format (known formats: " + names + ")",
+                     {path.string(), 0, 0});
+  }
+  return r->read(path, options, report);
+}
+
+}  // namespace auv
