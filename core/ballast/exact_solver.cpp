@@ -1,0 +1,111 @@
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "ballast/ballast_solver.h"
+#include "ballast/extra_piece.h"
+#include "ballast/lexicographic_optimum.h"
+#include "ballast/solution_text.h"
+#include "common/units.h"
+
+namespace auv {
+namespace {
+
+using namespace ballast;
+
+std::string suffix(const ExtraPieceAnswer& a) {
+  if (a.out_of_reach) {
+    return "; out of reach whatever the piece sizes: the points' capacities, the installed pieces and the "
+           "higher priorities limit it";
+  }
+  if (a.size_kg) return "; a " + sizeText(*a.size_kg) + " piece would reach it";
+  if (a.tried_kg.empty()) return "";
+  std::string sizes;
+  for (double s : a.tried_kg) sizes += (sizes.empty() ? "" : ", ") + sizeText(s);
+  return "; no single extra piece size tried (" + sizes + ") would reach it" +
+         (a.undecided ? " (some were not searched to the end)" : "");
+}
+
+void explain(const BallastProblem& pr, const TrimModel& model, const TrimTargets& targets, const Optimum& opt,
+             BallastSolution& sol) {
+  const TrimSpec& spec = pr.spec;
+  const double lo = std::max(0.0, spec.net_buoyancy_min_kg);
+  int handled = 0;
+  for (std::size_t p = 0; p < pr.points.size(); ++p) {
+    const double before = installedMassKg(pr, p);
+    sol.notes.push_back(pointNote(pr.points[p], pr.piece_sizes_kg, sol.delta[p].data(), before, before + sol.add_kg[p]));
+    for (int d : sol.delta[p]) handled += std::abs(d);
+  }
+  sol.notes.push_back("Priorities (thesis \u00a75.4): net buoyancy " + kgText(lo) + " to " +
+                      kgText(spec.net_buoyancy_max_kg) + " and never negative, then pitch within \u00b1" +
+                      degText(spec.pitch_tolerance_deg) + ", then roll within \u00b1" +
+                      degText(spec.roll_tolerance_deg) + "; " + std::to_string(handled) +
+                      " piece(s) to handle.");
+  sol.notes.push_back("After the move: net buoyancy " + signedKgText(sol.net_buoyancy_kg) + ", pitch " +
+                      signedDegText(sol.pitch_deg) + ", roll " + signedDegText(sol.roll_deg) + ".");
+
+  if (pr.policy == BallastPolicy::HalfWay) {
+    sol.notes.push_back("HalfWay policy: this move aims at about half of the needed change (net buoyancy " +
+                        kgText(targets.net_lo_kg) + " to " + kgText(targets.net_hi_kg) + ", pitch " +
+                        signedDegText(units::radToDeg(targets.pitch_centre)) + ", roll " +
+                        signedDegText(units::radToDeg(targets.roll_centre)) +
+                        "); check the vehicle again and repeat.");
+  } else {
+    if (opt.window.best.negative_kg > 1e-6) {
+      // said below, for both policies
+    } else if (opt.window.best.band_violation_kg > 1e-6) {
+      sol.warnings.push_back("net buoyancy band " + kgText(lo) + " to " + kgText(spec.net_buoyancy_max_kg) +
+                             " not reachable with this kit; best " + signedKgText(sol.net_buoyancy_kg) +
+                             suffix(extraPieceReaching(pr, model, targets, opt, Band::Buoyancy)));
+    }
+    // Warn on the exact attitude; the solver ranks pitch by pitch_x, which is
+    // never smaller, so a band it missed may still be met once roll is counted.
+    if (opt.pitch_best > kInBandRad && !sol.pitch_in_band) {
+      sol.warnings.push_back("pitch band \u00b1" + degText(spec.pitch_tolerance_deg) +
+                             " not reachable with this kit; best " + signedDegText(sol.pitch_deg) +
+                             suffix(extraPieceReaching(pr, model, targets, opt, Band::Pitch)));
+    }
+    if (opt.roll_best > kInBandRad && !sol.roll_in_band) {
+      sol.warnings.push_back("roll band \u00b1" + degText(spec.roll_tolerance_deg) +
+                             " not reachable with this kit" +
+                             (opt.pitch_best <= kInBandRad ? " while pitch stays in band" : "") + "; best " +
+                             signedDegText(sol.roll_deg) +
+                             suffix(extraPieceReaching(pr, model, targets, opt, Band::Roll)));
+    }
+  }
+  if (opt.window.best.negative_kg > 1e-6) {
+    sol.warnings.push_back("the vehicle stays " + kgText(opt.window.best.negative_kg) +
+                           " heavy even with every removable piece out; it needs added buoyancy or a lighter payload");
+  }
+  if (opt.stats.limited) {
+    sol.warnings.push_back("the search stopped at its node limit: this is the best move found, not a proved optimum");
+  }
+  if (!opt.best.outcome.stable) {
+    sol.warnings.push_back("CG is not below CB after the move: the vehicle would capsize; check bg and payload");
+  }
+}
+
+}  // namespace
+
+BallastSolution solveBallast(const BallastProblem& pr) {
+  validateBallastProblem(pr);
+  const TrimModel model = trimModel(pr);
+  const std::vector<PointOptions> options = allPointOptions(pr, sizesInQuanta(pr.piece_sizes_kg));
+  TrimTargets targets = exactTargets(pr.spec);
+  if (pr.policy == BallastPolicy::HalfWay) {
+    const TrimOutcome now = model.outcome(0.0, Eigen::Vector3d::Zero());
+    targets = halfWayTargets(pr.spec, now.net_kg, now.pitch_x_rad, now.roll_rad);
+  }
+  const Optimum opt = lexicographicOptimum(model, targets, options);
+
+  std::vector<std::vector<int>> delta;
+  for (std::size_t p = 0; p < options.size(); ++p) {
+    const int* d = options[p].deltaOf(static_cast<std::size_t>(opt.best.option[p]));
+    delta.emplace_back(d, d + options[p].sizes);
+  }
+  BallastSolution sol = evaluateMove(pr, delta);
+  explain(pr, model, targets, opt, sol);
+  return sol;
+}
+
+}  // namespace auv
