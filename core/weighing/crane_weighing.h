@@ -14,8 +14,6 @@
 
 namespace auv {
 
-enum CranePoint { kForeStarboard = 0, kForePort = 1, kAftStarboard = 2, kAftPort = 3 };
-
 struct CraneWeighing {
   std::array<double, 4> scales_kg{};  // FS, FP, AS, AP readings (kgf)
   double total_kg = 0.0;              // hook scale
