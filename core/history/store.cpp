@@ -1,0 +1,61 @@
+#include "history/store.h"
+
+#include "common/input_error.h"
+
+namespace auv {
+
+HistoryStore::HistoryStore(const std::string& path) : HistoryStore(path, standardMigrations()) {}
+
+HistoryStore::HistoryStore(const std::string& path, const std::vector<Migration>& steps)
+    : db_(std::make_unique<Database>(path)) {
+  open(steps);
+}
+
+HistoryStore::~HistoryStore() = default;
+
+void HistoryStore::open(const std::vector<Migration>& steps) {
+  Database& db = *db_;
+  // Another auvballast (GUI and CLI at once) may hold the write lock briefly.
+  db.exec("PRAGMA busy_timeout = 5000", "setting the busy timeout");
+  // Reading the header first: a foreign file or a newer schema is refused
+  // before the WAL switch below could write anything to it.
+  requireNotNewer(db, steps);
+  // WAL: a save appends to the -wal file and the main file changes only at
+  // checkpoints, so a killed writer cannot leave a torn main file and readers
+  // (the GUI) never block the writer.
+  const std::string mode = db.queryText("PRAGMA journal_mode = WAL");
+  if (mode != "wal")
+    throw InputError("history database",
+                     "'" + path() + "' cannot use write-ahead logging (journal mode '" + mode +
+                         "')",
+                     "keep the history on a local disk, not a network share");
+  // FULL: fsync the WAL at every commit, so a committed save also survives a
+  // power cut or OS crash, not only a killed process (~ms per save; saves are rare).
+  db.exec("PRAGMA synchronous = FULL", "setting synchronous mode");
+  db.exec("PRAGMA foreign_keys = ON", "enabling foreign keys");
+  migrate(db, steps);
+}
+
+int HistoryStore::schemaVersion() { return schemaVersionOf(*db_); }
+
+std::string HistoryStore::integrityCheck() {
+  auto st = db_->prepare("PRAGMA integrity_check");
+  std::string all;
+  while (st.step()) {
+    if (!all.empty()) all += "\n";
+    all += st.text(0);
+  }
+  return all;
+}
+
+RecordId HistoryStore::configRow(const std::string& config_id) {
+  auto st = db_->prepare("SELECT id FROM configurations WHERE config_id = ?1");
+  st.bind(1, config_id);
+  if (!st.step())
+    throw InputError("configuration ID",
+                     "'" + config_id + "' is not in the history '" + path() + "'",
+                     "check the ID, or create the configuration first (first-mission mode)");
+  return st.integer(0);
+}
+
+}  // namespace auv
