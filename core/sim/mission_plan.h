@@ -1,0 +1,40 @@
+#pragma once
+// A mission plan file (docs/formats/mission-plan.md): which vehicle, what
+// water, how it is ballasted, and the legs it flies, turned into the
+// simulator's Scenario and options. Every field is read through JsonReader,
+// so a bad plan is reported with file and JSON path.
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/depth_autopilot.h"
+#include "sim/simulator.h"
+#include "sim/vehicle_model.h"
+#include "sim/water_column.h"
+#include "vehicle/vehicle_profile.h"
+
+namespace auv::sim {
+
+struct MissionPlan {
+  std::string file;
+  std::string vehicle;       // profile id, e.g. "delphin2"
+  std::string description;
+  Scenario scenario;
+  SimOptions options;
+  WaterColumn water = WaterColumn::uniform(1025.0);
+  std::optional<bool> anti_windup;  // overrides the vehicle's autopilot if set
+};
+
+MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file);
+MissionPlan loadMissionPlan(const std::string& file);
+
+// The simulator's view of a vehicle: its profile's own sim sections, or, for
+// a profile without them, <resource_dir>/sim/<id>_hydrodynamics.json.
+struct SimVehicle {
+  VehicleModel model;
+  DepthAutopilotConfig autopilot;
+};
+SimVehicle loadSimVehicle(const VehicleProfile& profile, const std::string& resource_dir);
+
+}  // namespace auv::sim

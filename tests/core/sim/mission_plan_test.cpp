@@ -1,0 +1,86 @@
+#include "sim/mission_plan.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "common/input_error.h"
+#include "common/units.h"
+#include "vehicle/json_reader.h"
+#include "vehicle/profile_loader.h"
+
+namespace auv::sim {
+namespace {
+
+const std::string kRes = AUV_RESOURCE_DIR;
+
+TEST(MissionPlan, Delphin2HoverPlanReproducesFigure14b) {
+  const MissionPlan plan = loadMissionPlan(kRes + "/examples/delphin2_hover.plan.json");
+  EXPECT_EQ(plan.vehicle, "delphin2");
+  ASSERT_EQ(plan.scenario.legs.size(), 3u);
+  EXPECT_DOUBLE_EQ(plan.scenario.legs[1].depth_m, 2.0);
+  EXPECT_DOUBLE_EQ(plan.scenario.legs[1].prop_demand, 0.0);
+  EXPECT_DOUBLE_EQ(*plan.scenario.net_buoyancy_n, 6.0);
+  ASSERT_TRUE(plan.anti_windup.has_value());
+  const SimVehicle v = loadSimVehicle(loadVehicleProfile(kRes + "/vehicles/" + plan.vehicle + ".json"), kRes);
+  DepthAutopilotConfig ap = v.autopilot;
+  ap.anti_windup = *plan.anti_windup;
+  const SimTrace tr = simulate(v.model, ap, plan.water, plan.scenario, plan.options);
+  // 1 -> 2 m step: overshoot about 0.2 m (sec. 8.1), depth held at the end.
+  double deepest = 0.0;
+  for (std::size_t i = 0; i < tr.size(); ++i) {
+    if (tr.time_s[i] >= 60 && tr.time_s[i] < 120) deepest = std::max(deepest, tr.depth_m[i]);
+  }
+  EXPECT_GT(deepest - 2.0, 0.1);
+  EXPECT_LT(deepest - 2.0, 0.3);
+  EXPECT_NEAR(tr.depth_m.back(), 1.0, 0.01);
+}
+
+TEST(MissionPlan, HuginSurveyPlanFliesItsLegsInTheCast) {
+  const MissionPlan plan = loadMissionPlan(kRes + "/examples/hugin1000_survey.plan.json");
+  const SimVehicle v = loadSimVehicle(loadVehicleProfile(kRes + "/vehicles/hugin1000.json"), kRes);
+  const SimTrace tr = simulate(v.model, v.autopilot, plan.water, plan.scenario, plan.options);
+  EXPECT_NEAR(tr.time_s.back(), 6300.0, 1e-6);
+  auto at = [&](double t) {
+    const auto it = std::lower_bound(tr.time_s.begin(), tr.time_s.end(), t - 1e-9);
+    return static_cast<std::size_t>(it - tr.time_s.begin());
+  };
+  EXPECT_NEAR(tr.depth_m[at(2100)], 50.0, 0.2);   // end of the 50 m leg (noise 2 cm)
+  EXPECT_NEAR(tr.depth_m[at(3900)], 100.0, 0.2);  // end of the 100 m leg
+  EXPECT_NEAR(tr.speed_mps[at(3900)], 2.0, 0.06);
+  EXPECT_NEAR(tr.salinity_psu[at(3900)], 35.0, 0.01);  // water from the cast
+}
+
+TEST(MissionPlan, ErrorsNameTheField) {
+  const std::string text = R"({"format": "auvballast-mission-plan", "version": 1, "vehicle": "delphin2",
+    "water": {"density_kgm3": 1000}, "legs": [{"type": "hover", "depth_m": 1, "duration_s": 10},
+    {"type": "glide", "depth_m": 1, "duration_s": 10}]})";
+  try {
+    (void)parseMissionPlan(JsonReader::parseText(text, "t.plan.json"), "t.plan.json");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "legs[1].type");
+    EXPECT_EQ(e.where().file, "t.plan.json");
+  }
+  const std::string no_water = R"({"format": "auvballast-mission-plan", "version": 1, "vehicle": "x",
+    "water": {}, "legs": [{"type": "hover", "depth_m": 1, "duration_s": 10}]})";
+  EXPECT_THROW((void)parseMissionPlan(JsonReader::parseText(no_water, "w.json"), "w.json"), InputError);
+  const std::string bad_bool = R"({"format": "auvballast-mission-plan", "version": 1, "vehicle": "x",
+    "water": {"density_kgm3": 1000}, "legs": [{"type": "hover", "depth_m": 1, "duration_s": 10}],
+    "options": {"anti_windup": "yes"}})";
+  try {
+    (void)parseMissionPlan(JsonReader::parseText(bad_bool, "b.json"), "b.json");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "options.anti_windup");
+  }
+}
+
+TEST(MissionPlan, VehicleWithoutSimParametersIsReported) {
+  VehicleProfile p = loadVehicleProfile(kRes + "/vehicles/hugin1000.json");
+  p.id = "nosuchvehicle";
+  EXPECT_THROW((void)loadSimVehicle(p, kRes), InputError);
+}
+
+}  // namespace
+}  // namespace auv::sim
