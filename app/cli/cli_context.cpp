@@ -1,28 +1,17 @@
 #include "cli_context.h"
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include "common/input_error.h"
+#include "resource_paths.h"
 
 namespace fs = std::filesystem;
 
 namespace auv::cli {
 
-std::string resourceDir() {
-  if (const char* env = std::getenv("AUVBALLAST_RESOURCES"); env && *env) return env;
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const fs::path installed = exe.parent_path().parent_path() / "share" / "auvballast" / "resources";
-    if (fs::exists(installed / "vehicles")) return installed.string();
-  }
-  return AUV_SOURCE_RESOURCE_DIR;
-}
-
-std::string vehiclesDir() { return resourceDir() + "/vehicles"; }
+std::string vehiclesDir() { return app::vehiclesDir(); }
 
 void writeJson(const nlohmann::json& j, const std::string& path) {
   if (path == "-") {

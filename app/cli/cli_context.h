@@ -7,10 +7,7 @@
 
 namespace auv::cli {
 
-// Resource folder: $AUVBALLAST_RESOURCES, else <exe>/../share/auvballast/resources
-// (installed), else the source tree's resources/ (build tree).
-std::string resourceDir();
-std::string vehiclesDir();
+std::string vehiclesDir();  // see app/common/resource_paths.h
 
 // Writes pretty JSON to `path` ("-" = stdout). Throws InputError if it cannot.
 void writeJson(const nlohmann::json& j, const std::string& path);

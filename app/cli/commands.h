@@ -13,5 +13,7 @@ struct Command {
 };
 
 Command addVehiclesCommand(CLI::App& app);
+Command addDensityCommand(CLI::App& app);
+Command addFirstMissionCommand(CLI::App& app);
 
 }  // namespace auv::cli

@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::map<CLI::App*, auv::cli::Action> actions;
-  for (auto add : {auv::cli::addVehiclesCommand}) {
+  for (auto add : {auv::cli::addVehiclesCommand, auv::cli::addDensityCommand, auv::cli::addFirstMissionCommand}) {
     auto cmd = add(app);
     actions[cmd.sub] = std::move(cmd.run);
   }

@@ -18,8 +18,16 @@ nlohmann::json mm3(const Eigen::Vector3d& m) {
 
 std::string fmt(const char* f, double v) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
+  std::snprintf(buf, sizeof buf, f, v == 0.0 ? 0.0 : v);  // no "-0.00"
   return buf;
+}
+
+// Glider ballast is lead shot in grams, AUV kit pieces are kilograms.
+std::string mass(double kg) { return std::abs(kg) < 0.1 ? fmt("%.0f g", kg * 1000.0) : fmt("%.2f kg", kg); }
+
+std::string buoyancyWord(double net_kg) {
+  if (std::abs(net_kg) < 0.0005) return "neutral";
+  return net_kg > 0 ? "too light" : "too heavy";
 }
 
 }  // namespace
@@ -62,26 +70,25 @@ std::string toText(const FirstMissionReport& r) {
   o << "  water: " << fmt("%.2f", r.temperature_degC) << " degC, " << fmt("%.2f", r.salinity_psu) << " PSU, "
     << fmt("%.1f", r.depth_m) << " m -> density " << fmt("%.3f", r.density_kgm3) << " kg/m3\n";
   o << "  weight " << fmt("%.2f", r.weight_kg) << " kg, buoyancy " << fmt("%.2f", r.buoyancy_kg)
-    << " kg, net buoyancy " << fmt("%+.2f", r.net_buoyancy_kg) << " kg ("
-    << (r.net_buoyancy_kg >= 0 ? "too light" : "too heavy") << ")\n";
+    << " kg, net buoyancy " << fmt("%+.3f", r.net_buoyancy_kg) << " kg (" << buoyancyWord(r.net_buoyancy_kg)
+    << ")\n";
   const Eigen::Vector3d d = r.cg_m - r.cb_m;
   o << "  CG - CB: x " << fmt("%+.1f", units::mToMm(d.x())) << " mm, y " << fmt("%+.1f", units::mToMm(d.y()))
     << " mm, z " << fmt("%+.1f", units::mToMm(d.z())) << " mm; static pitch "
     << fmt("%+.2f", r.pitch_before_deg) << " deg, roll " << fmt("%+.2f", r.roll_before_deg) << " deg\n";
   o << "Recommendation:\n";
   for (const auto& p : r.points) {
-    o << "  " << p.label << ": " << fmt("%+.2f", p.add_kg) << " kg";
+    o << "  " << p.label << ": " << (p.add_kg > 0 ? "+" : p.add_kg < 0 ? "-" : "") << mass(std::abs(p.add_kg));
     std::string sep = " (";
     for (const auto& pc : p.pieces) {
       if (pc.count == 0) continue;
-      o << sep << (pc.count > 0 ? "add " : "remove ") << std::abs(pc.count) << " x " << fmt("%.2f", pc.size_kg)
-        << " kg";
+      o << sep << (pc.count > 0 ? "add " : "remove ") << std::abs(pc.count) << " x " << mass(pc.size_kg);
       sep = ", ";
     }
     if (sep == ", ") o << ")";
     o << "\n";
   }
-  o << "Predicted after the change: net buoyancy " << fmt("%+.2f", r.predicted.net_buoyancy_kg)
+  o << "Predicted after the change: net buoyancy " << fmt("%+.3f", r.predicted.net_buoyancy_kg)
     << " kg, CG - CB x " << fmt("%+.1f", units::mToMm(r.predicted.cg_offset_m.x())) << " mm, y "
     << fmt("%+.1f", units::mToMm(r.predicted.cg_offset_m.y())) << " mm, pitch "
     << fmt("%+.2f", r.predicted.pitch_deg) << " deg, roll " << fmt("%+.2f", r.predicted.roll_deg) << " deg\n";

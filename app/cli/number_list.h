@@ -1,0 +1,13 @@
+#pragma once
+// Comma-separated numeric flags ("374.5,374.5,380,370"): parsed here so the
+// error names the flag, the bad item and what a valid value looks like.
+#include <string>
+#include <vector>
+
+namespace auv::cli {
+
+std::vector<double> parseNumberList(const std::string& text, std::size_t expected, const std::string& field,
+                                    const std::string& what);
+double parseNumber(const std::string& text, const std::string& field, const std::string& what);
+
+}  // namespace auv::cli
