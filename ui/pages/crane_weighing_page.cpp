@@ -1,0 +1,154 @@
+#include "pages/crane_weighing_page.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "common/input_error.h"
+#include "weighing/crane_weighing.h"
+#include "wizard/operator_wizard.h"
+
+namespace auv::ui {
+namespace {
+
+QDoubleSpinBox* spin(const QString& name, double lo, double hi, int decimals, const QString& suffix,
+                     const QString& tip) {
+  auto* s = new QDoubleSpinBox;
+  s->setObjectName(name);
+  s->setRange(lo, hi);
+  s->setDecimals(decimals);
+  s->setSuffix(suffix);
+  s->setToolTip(tip);
+  s->setMinimumHeight(32);  // gloves on a dockside laptop
+  s->setKeyboardTracking(true);
+  return s;
+}
+
+}  // namespace
+
+CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
+  setTitle(tr("Weighing with crane scales"));
+  setSubTitle(tr("Hang the vehicle from two ropes, fore and aft, with a crane scale at each rope end, "
+                 "and read the hook scale for the total."));
+  const QString names[4] = {tr("Fore / &starboard:"), tr("Fore / &port:"), tr("Aft / s&tarboard:"),
+                            tr("Aft / p&ort:")};
+  const char* ids[4] = {"scale_fs", "scale_fp", "scale_as", "scale_ap"};
+  auto* scalesBox = new QGroupBox(tr("Scale readings"));
+  auto* sf = new QFormLayout(scalesBox);
+  for (int i = 0; i < 4; ++i) {
+    scales_[static_cast<std::size_t>(i)] =
+        spin(ids[i], 0, 5000, 1, " kg",
+             tr("Reading of the crane scale at this rope end, in kg, with the vehicle hanging still."));
+    sf->addRow(names[i], scales_[static_cast<std::size_t>(i)]);
+  }
+  total_ = spin("total", 0, 10000, 1, " kg", tr("Reading of the scale on the crane hook (the whole vehicle)."));
+  sf->addRow(tr("&Hook (total):"), total_);
+  sum_check_ = new QLabel;
+  sum_check_->setObjectName("sum_check");
+  sf->addRow(QString(), sum_check_);
+
+  auto* ropeBox = new QGroupBox(tr("Rope positions"));
+  auto* rf = new QFormLayout(ropeBox);
+  rope_fore_ = spin("rope_fore", -20, 20, 4, " m",
+                    tr("x of the fore rope from the vehicle origin, forward positive (measure along the hull)."));
+  rope_aft_ = spin("rope_aft", -20, 20, 4, " m", tr("x of the aft rope from the vehicle origin, forward positive."));
+  rope_y_ = spin("rope_y", 0.01, 5, 3, " m", tr("Half the lateral distance between the two ends of one rope."));
+  rf->addRow(tr("&Fore rope x:"), rope_fore_);
+  rf->addRow(tr("&Aft rope x:"), rope_aft_);
+  rf->addRow(tr("Rope end &y (±):"), rope_y_);
+
+  auto* instBox = new QGroupBox(tr("Adjustment weight installed now"));
+  auto* inf = new QFormLayout(instBox);
+  for (int i = 0; i < 4; ++i) {
+    installed_[static_cast<std::size_t>(i)] =
+        spin(QString("installed_%1").arg(i), 0, 200, 1, " kg", tr("Kit pieces already in this point, in kg."));
+    inf->addRow(names[i], installed_[static_cast<std::size_t>(i)]);
+  }
+  error_ = new QLabel;
+  error_->setObjectName("error");
+  error_->setWordWrap(true);
+  error_->setStyleSheet("color: #b00020;");
+
+  auto* grid = new QGridLayout;
+  grid->addWidget(scalesBox, 0, 0, 2, 1);
+  grid->addWidget(ropeBox, 0, 1);
+  grid->addWidget(instBox, 1, 1);
+  auto* lay = new QVBoxLayout(this);
+  lay->addLayout(grid);
+  lay->addWidget(error_);
+  lay->addStretch();
+
+  for (auto* s : scales_) connect(s, &QDoubleSpinBox::valueChanged, this, [this] { updateSumCheck(); });
+  connect(total_, &QDoubleSpinBox::valueChanged, this, [this] { updateSumCheck(); });
+}
+
+void CraneWeighingPage::initializePage() {
+  const auto& w = state_.crane.weighing;
+  for (std::size_t i = 0; i < 4; ++i) {
+    scales_[i]->setValue(w.scales_kg[i]);
+    installed_[i]->setValue(i < state_.crane.installed_kg.size() ? state_.crane.installed_kg[i] : 0.0);
+    if (state_.vehicle && i < state_.vehicle->points.size()) {
+      installed_[i]->setToolTip(tr("Kit pieces already in '%1', in kg.")
+                                    .arg(QString::fromStdString(state_.vehicle->points[i].label)));
+    }
+  }
+  total_->setValue(w.total_kg);
+  rope_fore_->setValue(w.rope_x_fore_m);
+  rope_aft_->setValue(w.rope_x_aft_m);
+  rope_y_->setValue(w.rope_y_m);
+  updateSumCheck();
+}
+
+void CraneWeighingPage::updateSumCheck() {
+  double parts = 0;
+  for (auto* s : scales_) parts += s->value();
+  const double diff = parts - total_->value();
+  const double tol = state_.crane.weighing.sum_tolerance_kg;
+  sum_ok_ = total_->value() > 0 && std::abs(diff) <= 5 * tol;
+  QString text = tr("Parts add up to %1 kg (%2 kg against the hook)").arg(parts, 0, 'f', 1).arg(diff, 0, 'f', 1);
+  if (std::abs(diff) <= tol) {
+    sum_check_->setStyleSheet("color: #1b5e20;");
+  } else if (sum_ok_) {
+    sum_check_->setStyleSheet("color: #8a6d00;");
+    text += tr(": more than %1 kg, check the readings").arg(tol, 0, 'f', 1);
+  } else {
+    sum_check_->setStyleSheet("color: #b00020;");
+    text += tr(": re-read the scales");
+  }
+  sum_check_->setText(text);
+  emit completeChanged();
+}
+
+bool CraneWeighingPage::isComplete() const { return sum_ok_; }
+
+void CraneWeighingPage::store() {
+  auto& w = state_.crane.weighing;
+  for (std::size_t i = 0; i < 4; ++i) w.scales_kg[i] = scales_[i]->value();
+  w.total_kg = total_->value();
+  w.rope_x_fore_m = rope_fore_->value();
+  w.rope_x_aft_m = rope_aft_->value();
+  w.rope_y_m = rope_y_->value();
+  state_.crane.installed_kg.clear();
+  for (auto* s : installed_) state_.crane.installed_kg.push_back(s->value());
+}
+
+bool CraneWeighingPage::validatePage() {
+  store();
+  try {
+    CraneWeighing w = state_.crane.weighing;
+    weighCrane(w);  // field-level checks; the numbers are computed on the result page
+  } catch (const InputError& e) {
+    error_->setText(QString::fromStdString(e.what()));
+    return false;
+  }
+  error_->clear();
+  return true;
+}
+
+int CraneWeighingPage::nextId() const { return OperatorWizard::kWater; }
+
+}  // namespace auv::ui

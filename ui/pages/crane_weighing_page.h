@@ -1,0 +1,38 @@
+#pragma once
+#include <QWizardPage>
+#include <array>
+
+#include "wizard/wizard_state.h"
+
+class QDoubleSpinBox;
+class QLabel;
+
+namespace auv::ui {
+
+// HUGIN crane method: four part scales, the hook scale, rope stations and
+// the adjustment weight already installed. The sum check runs while typing.
+class CraneWeighingPage : public QWizardPage {
+  Q_OBJECT
+ public:
+  explicit CraneWeighingPage(WizardState& state);
+  void initializePage() override;
+  bool validatePage() override;
+  bool isComplete() const override;
+  int nextId() const override;
+
+ private:
+  void store();
+  void updateSumCheck();
+  WizardState& state_;
+  std::array<QDoubleSpinBox*, 4> scales_{};
+  std::array<QDoubleSpinBox*, 4> installed_{};
+  QDoubleSpinBox* total_;
+  QDoubleSpinBox* rope_fore_;
+  QDoubleSpinBox* rope_aft_;
+  QDoubleSpinBox* rope_y_;
+  QLabel* sum_check_;
+  QLabel* error_;
+  bool sum_ok_ = false;
+};
+
+}  // namespace auv::ui

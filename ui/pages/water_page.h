@@ -1,0 +1,34 @@
+#pragma once
+#include <QWizardPage>
+
+#include "wizard/wizard_state.h"
+
+class QDoubleSpinBox;
+class QComboBox;
+class QLabel;
+
+namespace auv::ui {
+
+// The water the next mission will fly in: temperature, salinity (typed, or a
+// water type from the thesis's Table 2.1) and the planned operating depth.
+class WaterPage : public QWizardPage {
+  Q_OBJECT
+ public:
+  explicit WaterPage(WizardState& state);
+  void initializePage() override;
+  bool validatePage() override;
+  int nextId() const override;
+
+ private:
+  void updateDensity();
+  WizardState& state_;
+  QDoubleSpinBox* temperature_;
+  QComboBox* water_type_;
+  QDoubleSpinBox* salinity_;
+  QDoubleSpinBox* depth_;
+  QDoubleSpinBox* latitude_;
+  QLabel* density_;
+  QLabel* error_;
+};
+
+}  // namespace auv::ui
