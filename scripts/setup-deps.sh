@@ -6,7 +6,8 @@ PKGS=(build-essential cmake ninja-build file pkg-config git
       qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
       libeigen3-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev libnetcdf-dev
       libgtest-dev libgmock-dev libbenchmark-dev
-      libgl1-mesa-dev libxkbcommon-dev fonts-dejavu-core)
+      libgl1-mesa-dev libxkbcommon-dev fonts-dejavu-core
+      clang libclang-rt-14-dev)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
