@@ -12,5 +12,9 @@ ctest --test-dir build --output-on-failure --parallel "$(nproc)" 2>&1 | tee buil
 [ "${PIPESTATUS[0]}" -eq 0 ] || exit 1
 ./scripts/fuzz.sh "${FUZZ_SECONDS:-20}"
 (cd build && cpack -B packages >/dev/null && ls packages/*.deb packages/*.tar.gz)
+# Smoke-test the packaged CLI: it must find its bundled profiles when installed.
+pkgtest="$(mktemp -d)"; tar -xzf build/packages/auvballast-*.tar.gz -C "$pkgtest"
+"$pkgtest"/auvballast-*/bin/auvballast vehicles | grep -q hugin1000 && echo "package smoke test: ok"
+rm -rf "$pkgtest"
 # Repeat the test count last, so it is the closing line of the run.
 grep -E "tests passed|tests failed" build/ctest.log | tail -n1
