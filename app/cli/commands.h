@@ -15,5 +15,6 @@ struct Command {
 Command addVehiclesCommand(CLI::App& app);
 Command addDensityCommand(CLI::App& app);
 Command addFirstMissionCommand(CLI::App& app);
+Command addAnalyzeCommand(CLI::App& app);
 
 }  // namespace auv::cli

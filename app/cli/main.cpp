@@ -13,7 +13,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::map<CLI::App*, auv::cli::Action> actions;
-  for (auto add : {auv::cli::addVehiclesCommand, auv::cli::addDensityCommand, auv::cli::addFirstMissionCommand}) {
+  using auv::cli::Command;
+  const std::initializer_list<Command (*)(CLI::App&)> commands = {
+      auv::cli::addVehiclesCommand,
+      auv::cli::addDensityCommand,
+      auv::cli::addFirstMissionCommand,
+      auv::cli::addAnalyzeCommand,
+  };
+  for (auto add : commands) {
     auto cmd = add(app);
     actions[cmd.sub] = std::move(cmd.run);
   }

@@ -1,0 +1,88 @@
+// auvballast analyze: a mission log and a vehicle -> segments, errors, water
+// and the estimated net buoyancy and CG offset (core/analysis). This file only
+// maps flags; every number comes from core.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "analysis/analysis_report.h"
+#include "analysis/mission_analysis.h"
+#include "cli_context.h"
+#include "commands.h"
+#include "common/input_error.h"
+#include "common/units.h"
+#include "missionlog/log_reader.h"
+#include "number_list.h"
+#include "vehicle/vehicle_catalog.h"
+
+namespace auv::cli {
+namespace {
+
+struct AnalyzeOpts {
+  std::string vehicle, log, installed, bg_mm, target_density, json;
+  bool no_classic = false;
+};
+
+int runAnalyze(const AnalyzeOpts& o) {
+  if (o.vehicle.empty()) throw InputError("vehicle", "missing", "give --vehicle ID (see 'auvballast vehicles') or a profile .json");
+  if (o.log.empty()) throw InputError("log", "missing", "give --log FILE (a mission log, e.g. the interchange CSV)");
+  const VehicleProfile v = VehicleCatalog(vehiclesDir()).load(o.vehicle);
+
+  analysis::AnalysisOptions a;
+  a.log_name = std::filesystem::path(o.log).filename().string();
+  if (!o.installed.empty())
+    a.installed_kg = parseNumberList(o.installed, v.points.size(), "installed",
+                                     "the kg of adjustment weight at each point during the mission, in profile order");
+  if (!o.bg_mm.empty()) {
+    const double bg = parseNumber(o.bg_mm, "bg-mm", "the CG-below-CB distance in mm from an inclining or roll test");
+    if (!(bg > 0.0)) throw InputError("bg-mm", "must be positive (CG below CB)", "give the measured distance in mm, e.g. --bg-mm 20");
+    a.bg_m = units::mmToM(bg);
+  }
+  if (!o.target_density.empty()) {
+    const double rho = parseNumber(o.target_density, "target-density", "the target water density in kg/m3");
+    if (!(rho > 900.0 && rho < 1100.0))
+      throw InputError("target-density", "must be a seawater density (900..1100 kg/m3)", "e.g. --target-density 1026.5");
+    a.target_density_kgm3 = rho;
+  }
+  a.classic = !o.no_classic;
+
+  ReadReport readReport;
+  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.log, ReadOptions{}, readReport);
+  analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
+  if (!readReport.clean()) {
+    r.warnings.insert(r.warnings.begin(), "the log had problems on import (" + std::to_string(readReport.totalProblems()) +
+                                              "); see the import summary");
+    r.details["import"] = {{"format", readReport.format},
+                           {"rows_kept", readReport.rows_kept},
+                           {"rows_skipped", readReport.rows_skipped},
+                           {"cells_blanked", readReport.cells_blanked},
+                           {"summary", readReport.summary()}};
+  }
+  if (!o.json.empty()) writeJson(analysis::toJson(r), o.json);
+  if (o.json != "-") {
+    if (!readReport.clean()) std::cout << readReport.summary() << "\n";
+    std::cout << analysis::toText(r);
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command addAnalyzeCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "analyze", "Mission log -> operating segments, depth/pitch/roll errors, water, net buoyancy and CG offset");
+  auto o = std::make_shared<AnalyzeOpts>();
+  cmd->add_option("--vehicle", o->vehicle, "Vehicle id (see 'auvballast vehicles') or profile .json")->required();
+  cmd->add_option("--log", o->log, "Mission log (interchange CSV, docs/formats/mission-log-csv.md)")->required();
+  cmd->add_option("--installed", o->installed,
+                  "Adjustment mass at each point during the logged mission, kg, profile order (e.g. FS,FP,AS,AP)");
+  cmd->add_option("--bg-mm", o->bg_mm,
+                  "CG below CB from an inclining/roll test, mm: turns the static roll into a CG y offset");
+  cmd->add_option("--target-density", o->target_density,
+                  "Gliders: water density for the ballast-to-add figure, kg/m3 (default: the log's mean below 10 m)");
+  cmd->add_flag("--no-classic", o->no_classic, "Skip the thesis's App. D checks (reported under details.classic)");
+  cmd->add_option("--json", o->json, "Write the JSON report here ('-' = stdout instead of text)");
+  return {cmd, [o]() { return runAnalyze(*o); }};
+}
+
+}  // namespace auv::cli

@@ -1,0 +1,74 @@
+#pragma once
+// What a post-mission analysis hands to every front end (CLI text, JSON, GUI,
+// the ballast solver). The JSON names are a contract (issue #3):
+// net_buoyancy_kg, net_buoyancy_sigma_kg, cg_offset_mm {x, y} (CG - CB, body
+// axes), errors {depth_m, pitch_deg, roll_deg}, water {temperature_degC,
+// salinity_psu, density_kgm3}, segments [{kind, start_s, end_s}], warnings,
+// and for gliders mass_to_add_g / mass_to_add_sigma_g. A quantity the log
+// cannot determine is null and `not_identifiable` says why.
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "analysis/segments.h"
+#include "analysis/statistics.h"
+
+namespace auv::analysis {
+
+struct EstimatedValue {
+  bool known = false;
+  double value = std::numeric_limits<double>::quiet_NaN();
+  double sigma = std::numeric_limits<double>::quiet_NaN();
+  std::string why_not;  // "not identifiable from this log because ..." when !known
+};
+
+struct SegmentReport {
+  SegmentKind kind = SegmentKind::kLevel;
+  double start_s = 0.0, end_s = 0.0;
+  bool used = false;  // an operating window the errors and estimates come from
+  // Means over the segment (NaN where the log lacks the channel); only
+  // operating windows carry them.
+  double depth_m = std::numeric_limits<double>::quiet_NaN();
+  double depth_error_m = std::numeric_limits<double>::quiet_NaN();
+  double pitch_deg = std::numeric_limits<double>::quiet_NaN();
+  double pitch_error_deg = std::numeric_limits<double>::quiet_NaN();
+  double roll_deg = std::numeric_limits<double>::quiet_NaN();
+  double speed_mps = std::numeric_limits<double>::quiet_NaN();
+  double prop_rpm = std::numeric_limits<double>::quiet_NaN();
+  double elevator_deg = std::numeric_limits<double>::quiet_NaN();
+  double net_buoyancy_kg = std::numeric_limits<double>::quiet_NaN();
+  double cg_x_mm = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct AnalysisReport {
+  std::string vehicle_id, vehicle_kind, log_name;
+  std::size_t rows = 0;
+  double duration_s = 0.0;
+
+  EstimatedValue net_buoyancy_kg;  // positive = too light
+  EstimatedValue cg_x_mm, cg_y_mm;  // CG - CB
+  std::string cg_y_basis;
+  // Gliders: signed grams to add for neutral buoyancy at target_density_kgm3.
+  EstimatedValue mass_to_add_g;
+  double target_density_kgm3 = std::numeric_limits<double>::quiet_NaN();
+
+  // Errors (thesis sign conventions): depth commanded - measured, pitch
+  // measured - commanded (or pitch at steady depth without a command), roll
+  // at cruise (starboard down positive).
+  MeanEstimate depth_error_m, pitch_error_deg, pitch_at_steady_depth_deg, roll_deg;
+  std::string pitch_error_basis;
+  // Water at operating depth (in situ).
+  MeanEstimate temperature_degC, salinity_psu, density_kgm3, pressure_dbar, depth_m;
+  std::string salinity_source, density_source;
+
+  std::vector<SegmentReport> segments;  // phases, then operating windows, in time order
+  std::vector<std::string> warnings;
+  std::vector<std::string> notes;
+  nlohmann::json details = nlohmann::json::object();  // model-specific extras (fit, classic mode)
+};
+
+nlohmann::json toJson(const AnalysisReport& r);
+std::string toText(const AnalysisReport& r);
+
+}  // namespace auv::analysis

@@ -1,0 +1,411 @@
+#include "analysis/auv_trim_estimation.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "common/units.h"
+
+namespace auv::analysis {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* kNotId = "not identifiable from this log because ";
+
+// Measured quantities of one segment, in model units, and their standard errors.
+struct Meas {
+  std::array<double, 5> v;   // speed, pitch rad, roll rad, elevator deg, depth rate
+  std::array<double, 5> se;
+};
+enum { kSpeed = 0, kPitch, kRoll, kElev, kRate };
+
+double seOr0(const MeanEstimate& m, double scale = 1.0) {
+  return std::isfinite(m.se) ? m.se * scale : 0.0;
+}
+
+Meas measOf(const SteadySegmentMeans& s, bool use_elevator) {
+  Meas m;
+  const double d2r = units::degToRad(1.0);
+  m.v = {s.speed_mps.mean, s.pitch_deg.mean * d2r, s.roll_deg.valid() ? s.roll_deg.mean * d2r : 0.0,
+         use_elevator ? s.elevator_deg.mean : 0.0, s.depth_rate_mps.valid() ? s.depth_rate_mps.mean : 0.0};
+  m.se = {seOr0(s.speed_mps), seOr0(s.pitch_deg, d2r), s.roll_deg.valid() ? seOr0(s.roll_deg, d2r) : 0.0,
+          use_elevator ? seOr0(s.elevator_deg) : 0.0, s.depth_rate_mps.valid() ? seOr0(s.depth_rate_mps) : 0.0};
+  return m;
+}
+
+struct Model {
+  SteadyHydroCoefficients c;
+  double W = 0.0, BG = 0.0, rho = 1025.0;
+  bool fit_bias = false;
+  int k() const { return fit_bias ? 3 : 2; }
+
+  // Rows A (2 x k) and right-hand side b of one segment: A p = b.
+  void rows(const std::array<double, 5>& v, Eigen::MatrixXd& A, Eigen::Vector2d& b) const {
+    SteadyFlight f{v[kSpeed], v[kPitch], v[kRoll], v[kElev], v[kRate], rho};
+    const HydroLoads h = steadyHydroLoads(c, f);
+    const double cc = std::cos(v[kPitch]) * std::cos(v[kRoll]);
+    const double uu = std::abs(v[kSpeed]) * v[kSpeed];
+    A.setZero(2, k());
+    A(0, 0) = cc;
+    A(1, 1) = W * cc;
+    if (fit_bias) {
+      A(0, 2) = c.Z_e_per_deg * uu;
+      A(1, 2) = c.M_e_per_deg * uu;
+    }
+    b << h.Z(), h.M() - W * BG * std::sin(v[kPitch]);
+  }
+  Eigen::Vector2d residual(const std::array<double, 5>& v, const Eigen::VectorXd& p) const {
+    Eigen::MatrixXd A;
+    Eigen::Vector2d b;
+    rows(v, A, b);
+    return A * p - b;
+  }
+};
+
+struct Solution {
+  bool ok = false;
+  Eigen::VectorXd p;
+  Eigen::MatrixXd cov;  // random part
+  double chi2_dof = 0.0;
+};
+
+// Generalised least squares with a 2x2 measurement covariance per segment,
+// linearised at `p0`.
+Solution solveGls(const Model& m, const std::vector<Meas>& meas, const Eigen::VectorXd& p0) {
+  const int k = m.k();
+  const auto n = static_cast<Eigen::Index>(meas.size());
+  Eigen::MatrixXd At(2 * n, k);
+  Eigen::VectorXd bt(2 * n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Meas& s = meas[static_cast<std::size_t>(i)];
+    Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
+    for (int j = 0; j < 5; ++j) {
+      if (!(s.se[j] > 0.0)) continue;
+      std::array<double, 5> hi = s.v, lo = s.v;
+      hi[j] += s.se[j];
+      lo[j] -= s.se[j];
+      const Eigen::Vector2d d = 0.5 * (m.residual(hi, p0) - m.residual(lo, p0));
+      C += d * d.transpose();
+    }
+    // Floor: 1 mN and 1 mN m, so a noise-free segment does not get infinite weight.
+    C(0, 0) += 1e-6;
+    C(1, 1) += 1e-6;
+    const Eigen::Matrix2d Linv = Eigen::Matrix2d(C.llt().matrixL()).inverse();
+    Eigen::MatrixXd A;
+    Eigen::Vector2d b;
+    m.rows(s.v, A, b);
+    At.middleRows(2 * i, 2) = Linv * A;
+    bt.segment(2 * i, 2) = Linv * b;
+  }
+  Solution sol;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(At, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const auto& sv = svd.singularValues();
+  if (sv.size() < k || !(sv(k - 1) > 1e-9 * sv(0))) return sol;
+  sol.ok = true;
+  sol.p = svd.solve(bt);
+  const Eigen::MatrixXd Vs = svd.matrixV() * sv.cwiseInverse().asDiagonal();
+  sol.cov = Vs * Vs.transpose();
+  const double chi2 = (At * sol.p - bt).squaredNorm();
+  const double dof = static_cast<double>(2 * n - k);
+  if (dof > 0) {
+    sol.chi2_dof = chi2 / dof;
+    sol.cov *= std::max(1.0, sol.chi2_dof);
+  }
+  return sol;
+}
+
+// Solution of the same system with the right-hand side of perturbed
+// coefficients, unweighted by the (unchanged) covariance: the shift is what a
+// systematic coefficient error does to the estimate.
+Eigen::VectorXd shiftFor(const Model& base, const Model& perturbed, const std::vector<Meas>& meas,
+                         const Eigen::VectorXd& p) {
+  const Solution a = solveGls(perturbed, meas, p);
+  const Solution b = solveGls(base, meas, p);
+  if (!a.ok || !b.ok) return Eigen::VectorXd::Zero(p.size());
+  return a.p - b.p;
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext& ctx, AuvTrimEstimate& out) {
+  // Static roll (propeller torque removed where the log allows).
+  std::vector<const SteadySegmentMeans*> s;
+  for (const auto& g : segs)
+    if (g.roll_deg.valid()) s.push_back(&g);
+  if (s.empty()) {
+    out.y_why = std::string(kNotId) + "no steady segment has roll samples";
+    return;
+  }
+  const double d2r = units::degToRad(1.0);
+  bool have_rpm = ctx.log_has_rpm;
+  for (const auto* g : s) have_rpm = have_rpm && g->prop_rpm.valid();
+  double n2min = std::numeric_limits<double>::infinity(), n2max = 0.0;
+  if (have_rpm)
+    for (const auto* g : s) {
+      const double n2 = g->prop_rpm.mean * g->prop_rpm.mean;
+      n2min = std::min(n2min, n2);
+      n2max = std::max(n2max, n2);
+    }
+  // Regress tan(roll) on rpm^2 / cos(theta) cos(phi) (the torque term of the
+  // roll balance), weighted by the roll standard errors; the intercept is the
+  // static roll.
+  auto rollSe = [&](const SteadySegmentMeans* g) {
+    return std::max(std::isfinite(g->roll_deg.se) ? g->roll_deg.se : 0.0, 1e-3);
+  };
+  if (have_rpm && s.size() >= 2 && n2max > ctx.min_speed2_spread * n2min && n2max > 0) {
+    Eigen::MatrixXd A(static_cast<Eigen::Index>(s.size()), 2);
+    Eigen::VectorXd b(A.rows());
+    for (Eigen::Index i = 0; i < A.rows(); ++i) {
+      const auto* g = s[static_cast<std::size_t>(i)];
+      const double phi = g->roll_deg.mean * d2r, th = g->pitch_deg.valid() ? g->pitch_deg.mean * d2r : 0.0;
+      const double w = 1.0 / (rollSe(g) * d2r / (std::cos(phi) * std::cos(phi)));
+      A(i, 0) = w;
+      A(i, 1) = w * g->prop_rpm.mean * g->prop_rpm.mean * 1e-6 / (std::cos(th) * std::cos(phi));
+      b(i) = w * std::tan(phi);
+    }
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    const Eigen::Vector2d p = svd.solve(b);
+    const Eigen::MatrixXd Vs = svd.matrixV() * svd.singularValues().cwiseInverse().asDiagonal();
+    Eigen::Matrix2d cov = Vs * Vs.transpose();
+    const double dof = static_cast<double>(A.rows()) - 2.0;
+    if (dof > 0) cov *= std::max(1.0, (A * p - b).squaredNorm() / dof);
+    out.roll_static_deg = units::radToDeg(std::atan(p(0)));
+    out.roll_static_sigma_deg = units::radToDeg(std::sqrt(cov(0, 0)) / (1.0 + p(0) * p(0)));
+    out.y_basis = "static (propeller torque fitted over " + std::to_string(s.size()) + " segments at different rpm)";
+  } else {
+    MeanAccumulator acc;  // segment means as blocks of one: scatter between segments counts
+    double sw = 0.0, swx = 0.0, sw_se2 = 0.0;
+    for (const auto* g : s) {
+      const double w = g->end_s - g->start_s;
+      sw += w;
+      swx += w * g->roll_deg.mean;
+      sw_se2 += w * w * rollSe(g) * rollSe(g);
+      acc.add(g->roll_deg.mean);
+      acc.endBlock();
+    }
+    out.roll_static_deg = swx / sw;
+    const MeanEstimate between = acc.result();
+    out.roll_static_sigma_deg = std::max(std::sqrt(sw_se2) / sw, s.size() >= 3 ? between.sd / std::sqrt(static_cast<double>(s.size())) : 0.0);
+    bool all_stopped = have_rpm;
+    if (have_rpm)
+      for (const auto* g : s) all_stopped = all_stopped && std::abs(g->prop_rpm.mean) < 1.0;
+    if (!ctx.log_has_rpm) {
+      out.y_basis = "static_assumed";
+      out.warnings.push_back("the log has no prop_rpm channel: CG y assumes the roll at cruise is static; any propeller reaction torque is included in it");
+    } else if (all_stopped) {
+      out.y_basis = "static";
+    } else {
+      out.y_basis = "cruise_equivalent";
+      out.warnings.push_back(
+          "all steady segments run the propeller at about the same speed, so its reaction torque cannot be separated "
+          "from a CG offset: cg_offset_mm.y is the offset that levels the vehicle at this cruise rpm, not the static CG");
+    }
+  }
+  out.roll_static_known = true;
+  if (!ctx.bg_measured_m) {
+    out.y_why = std::string(kNotId) +
+                "a steady roll gives y = BG tan(roll) and BG (the CG height below the CB) cannot be measured from the "
+                "log: give --bg-mm from an inclining or roll test (static roll " +
+                fmt("%+.2f", out.roll_static_deg) + " deg)";
+    return;
+  }
+  const double bg = *ctx.bg_measured_m;
+  const double t = std::tan(units::degToRad(out.roll_static_deg));
+  out.y_m = bg * t;
+  out.y_sigma_m = std::abs(bg) * (1.0 + t * t) * units::degToRad(out.roll_static_sigma_deg);
+  out.y_identified = true;
+}
+
+}  // namespace
+
+AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, const SteadyHydroCoefficients* coeffs,
+                                const std::string& no_coefficients_reason, const AuvTrimContext& ctx) {
+  AuvTrimEstimate out;
+  estimateRoll(segments, ctx, out);
+
+  auto notIdentifiable = [&](const std::string& why) {
+    out.buoyancy_why = out.x_why = std::string(kNotId) + why;
+  };
+  if (segments.empty()) {
+    notIdentifiable("no steady level-flight segment long enough was found");
+    return out;
+  }
+  if (!coeffs) {
+    notIdentifiable(no_coefficients_reason);
+    return out;
+  }
+  if (!ctx.log_has_speed) {
+    notIdentifiable("the log has no speed channel (the lift and moment that balance them scale with speed squared)");
+    return out;
+  }
+  const bool use_elevator = coeffs->has_planes && ctx.log_has_elevator;
+  std::vector<Meas> meas;
+  std::vector<std::size_t> seg_index;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const auto& s = segments[i];
+    if (!s.speed_mps.valid() || !s.pitch_deg.valid()) continue;
+    if (use_elevator && !s.elevator_deg.valid()) continue;
+    meas.push_back(measOf(s, use_elevator));
+    seg_index.push_back(i);
+  }
+  out.segment_net_buoyancy_kg.assign(segments.size(), kNaN);
+  out.segment_x_m.assign(segments.size(), kNaN);
+  if (meas.empty()) {
+    notIdentifiable("no steady segment has both speed and pitch samples");
+    return out;
+  }
+  out.segments_used = meas.size();
+
+  Model m;
+  m.c = *coeffs;
+  m.W = ctx.weight_n;
+  m.BG = ctx.bg_measured_m.value_or(ctx.bg_profile_m);
+  m.rho = ctx.density_kgm3;
+
+  if (coeffs->has_planes && !ctx.log_has_elevator) {
+    // Eliminating the unknown elevator angle from each pair leaves one
+    // equation in W x_G - l (B - W), l = M_e / Z_e, whatever the speeds.
+    const double l = coeffs->M_e_per_deg / coeffs->Z_e_per_deg;
+    MeanAccumulator acc;
+    double sw = 0, swq = 0;
+    for (const Meas& s : meas) {
+      auto q = [&](const std::array<double, 5>& v) {
+        const HydroLoads h = steadyHydroLoads(m.c, {v[kSpeed], v[kPitch], v[kRoll], 0.0, v[kRate], m.rho});
+        return (h.M_lift + h.M_munk - l * h.Z_lift - m.W * m.BG * std::sin(v[kPitch])) /
+               (std::cos(v[kPitch]) * std::cos(v[kRoll]));
+      };
+      double var = 1e-12;
+      for (int j = 0; j < 5; ++j) {
+        if (!(s.se[j] > 0)) continue;
+        std::array<double, 5> hi = s.v, lo = s.v;
+        hi[j] += s.se[j];
+        lo[j] -= s.se[j];
+        var += 0.25 * (q(hi) - q(lo)) * (q(hi) - q(lo));
+      }
+      sw += 1.0 / var;
+      swq += q(s.v) / var;
+      acc.add(q(s.v));
+      acc.endBlock();
+    }
+    out.plane_lever_m = l;
+    out.moment_combination_nm = swq / sw;
+    out.moment_combination_sigma_nm = std::max(std::sqrt(1.0 / sw), meas.size() >= 3 ? acc.result().sd / std::sqrt(static_cast<double>(meas.size())) : 0.0);
+    notIdentifiable(
+        "the log has no elevator channel: with the plane angle unknown, each steady segment only fixes the moment "
+        "W x_G - l (B - W) about the planes' centre of pressure (l = " + fmt("%.3f", l) +
+        " m), at any speed; record the elevator (stern-plane) angle");
+    return out;
+  }
+
+  // Elevator zero offset: separable from B - W only through the u^2 scaling.
+  if (use_elevator && meas.size() >= 2) {
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    for (const Meas& s : meas) {
+      lo = std::min(lo, s.v[kSpeed] * s.v[kSpeed]);
+      hi = std::max(hi, s.v[kSpeed] * s.v[kSpeed]);
+    }
+    m.fit_bias = hi > ctx.min_speed2_spread * lo;
+  }
+  if (use_elevator && !m.fit_bias)
+    out.notes.push_back(std::string("elevator zero offset assumed 0: ") + kNotId +
+                        "the steady segments do not span enough speeds (max/min speed^2 below " +
+                        fmt("%.2f", ctx.min_speed2_spread) + ")");
+
+  Eigen::VectorXd p = Eigen::VectorXd::Zero(m.k());
+  Solution sol;
+  for (int pass = 0; pass < 3; ++pass) {
+    sol = solveGls(m, meas, p);
+    if (!sol.ok) break;
+    p = sol.p;
+  }
+  if (!sol.ok && m.fit_bias) {
+    m.fit_bias = false;
+    out.notes.push_back(std::string("elevator zero offset assumed 0: ") + kNotId + "it is not separable from the net buoyancy here");
+    p = Eigen::VectorXd::Zero(2);
+    for (int pass = 0; pass < 3; ++pass) {
+      sol = solveGls(m, meas, p);
+      if (!sol.ok) break;
+      p = sol.p;
+    }
+  }
+  if (!sol.ok) {
+    notIdentifiable("the steady segments do not determine the heave and pitch balance (degenerate geometry)");
+    return out;
+  }
+  out.chi2_per_dof = sol.chi2_dof;
+
+  // Systematic part: every derivative group off by its relative sigma, BG
+  // off by its sigma when it comes from the profile.
+  Eigen::MatrixXd cov = sol.cov;
+  auto addShift = [&](const Model& perturbed) {
+    const Eigen::VectorXd d = shiftFor(m, perturbed, meas, p);
+    cov += d * d.transpose();
+  };
+  const double r = ctx.coefficient_rel_sigma;
+  if (r > 0) {
+    Model a = m;
+    a.c.Zw_prime *= 1 + r;
+    a.c.Zww_kg_per_m *= 1 + r;
+    addShift(a);
+    Model b = m;
+    b.c.Mw_prime *= 1 + r;
+    b.c.Mww_kg *= 1 + r;
+    addShift(b);
+    Model c = m;
+    c.c.Xudot_kg *= 1 + r;
+    c.c.Zwdot_kg *= 1 + r;
+    addShift(c);
+    if (m.c.has_planes) {
+      Model d = m;
+      d.c.Z_e_per_deg *= 1 + r;
+      d.c.M_e_per_deg *= 1 + r;
+      addShift(d);
+    }
+  }
+  if (!ctx.bg_measured_m && ctx.bg_profile_rel_sigma > 0) {
+    Model e = m;
+    e.BG *= 1 + ctx.bg_profile_rel_sigma;
+    addShift(e);
+  }
+
+  out.buoyancy_identified = out.x_identified = true;
+  out.net_buoyancy_kg = p(0) / units::g0;
+  out.net_buoyancy_sigma_kg = std::sqrt(cov(0, 0)) / units::g0;
+  out.x_m = p(1);
+  out.x_sigma_m = std::sqrt(cov(1, 1));
+  if (m.fit_bias) {
+    out.elevator_bias_fitted = true;
+    out.elevator_bias_deg = p(2);
+    out.elevator_bias_sigma_deg = std::sqrt(cov(2, 2));
+  }
+  // Per-segment values with the common elevator offset applied.
+  for (std::size_t j = 0; j < meas.size(); ++j) {
+    std::array<double, 5> v = meas[j].v;
+    if (m.fit_bias) v[kElev] -= p(2);
+    Model one = m;
+    one.fit_bias = false;
+    Eigen::MatrixXd A;
+    Eigen::Vector2d b;
+    one.rows(v, A, b);
+    out.segment_net_buoyancy_kg[seg_index[j]] = b(0) / A(0, 0) / units::g0;
+    out.segment_x_m[seg_index[j]] = b(1) / A(1, 1);
+  }
+  if (!m.c.note.empty()) out.notes.push_back(m.c.note);
+  if (!ctx.bg_measured_m)
+    out.notes.push_back("x uses the profile's BG = " + fmt("%.1f", units::mToMm(m.BG)) +
+                        " mm for the BG sin(pitch) term (+-" + fmt("%.0f", 100 * ctx.bg_profile_rel_sigma) +
+                        " % in the sigma); --bg-mm overrides it");
+  out.notes.push_back("sigmas include a " + fmt("%.0f", 100 * r) +
+                      " % systematic uncertainty of each group of hydrodynamic derivatives");
+  return out;
+}
+
+}  // namespace auv::analysis

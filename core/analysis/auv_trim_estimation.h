@@ -1,0 +1,59 @@
+#pragma once
+// Net buoyancy and CG offset of an AUV from its steady level-flight segments:
+// the heave force and pitch moment balance of auv_steady_model.h, one pair of
+// equations per segment, solved by generalised least squares for
+// (B - W, x_G) and, when the segments fly at different speeds, the elevator
+// zero offset. CG y comes from the roll moment balance, y = BG tan(roll),
+// with the propeller reaction torque (proportional to rpm^2) separated when
+// the log has several propeller speeds. Whatever the log cannot separate is
+// reported as not identifiable with the reason, never guessed.
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "analysis/auv_steady_model.h"
+#include "analysis/statistics.h"
+
+namespace auv::analysis {
+
+// Means of one steady segment (each from its own channel's samples).
+struct SteadySegmentMeans {
+  double start_s = 0.0, end_s = 0.0;
+  MeanEstimate speed_mps, pitch_deg, roll_deg, elevator_deg, depth_rate_mps, prop_rpm;
+};
+
+struct AuvTrimContext {
+  double weight_n = 0.0;        // as flown (profile mass + installed adjustment weights)
+  double density_kgm3 = 1025.0;
+  std::optional<double> bg_measured_m;  // --bg-mm: needed for CG y
+  double bg_profile_m = 0.0;            // used for the small BG sin(theta) term of x
+  double bg_profile_rel_sigma = 0.25;
+  double coefficient_rel_sigma = 0.10;  // systematic uncertainty of every hydrodynamic derivative group
+  double min_speed2_spread = 1.3;       // max(u^2)/min(u^2) needed to fit the elevator zero offset
+  bool log_has_speed = false, log_has_elevator = false, log_has_rpm = false;
+};
+
+struct AuvTrimEstimate {
+  bool buoyancy_identified = false, x_identified = false, y_identified = false;
+  std::string buoyancy_why, x_why, y_why;  // "not identifiable from this log because ..."
+  double net_buoyancy_kg = 0.0, net_buoyancy_sigma_kg = 0.0;
+  double x_m = 0.0, x_sigma_m = 0.0;
+  double y_m = 0.0, y_sigma_m = 0.0;
+  std::string y_basis;  // "static", "static (propeller torque fitted)", "cruise_equivalent", "static_assumed"
+  double roll_static_deg = 0.0, roll_static_sigma_deg = 0.0;
+  bool roll_static_known = false;
+  bool elevator_bias_fitted = false;
+  double elevator_bias_deg = 0.0, elevator_bias_sigma_deg = 0.0;
+  double chi2_per_dof = 0.0;
+  std::size_t segments_used = 0;
+  std::vector<double> segment_net_buoyancy_kg, segment_x_m;  // NaN where not computable
+  // Without an elevator channel only W x_G - l (B - W) is determined (l = M_e/Z_e).
+  std::optional<double> moment_combination_nm, moment_combination_sigma_nm, plane_lever_m;
+  std::vector<std::string> notes, warnings;
+};
+
+AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, const SteadyHydroCoefficients* coeffs,
+                                const std::string& no_coefficients_reason, const AuvTrimContext& ctx);
+
+}  // namespace auv::analysis

@@ -1,0 +1,531 @@
+#include "analysis/mission_analysis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "analysis/auv_steady_model.h"
+#include "analysis/auv_trim_estimation.h"
+#include "analysis/classic_thesis.h"
+#include "analysis/series_tools.h"
+#include "analysis/statistics.h"
+#include "common/input_error.h"
+#include "common/units.h"
+#include "seawater/seawater.h"
+#include "vehicle/json_reader.h"
+
+namespace auv::analysis {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string fmt(const char* f, double v) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+bool hasSamples(const MissionLog& log, const char* name, std::size_t min = 1) {
+  const LogChannel* c = log.find(name);
+  if (!c) return false;
+  std::size_t n = 0;
+  for (double v : c->values)
+    if (!std::isnan(v) && ++n >= min) return true;
+  return false;
+}
+
+// Per-window and overall accumulators for one quantity; the overall one
+// starts a new block at every window so no lag pair spans two windows.
+struct WindowStats {
+  std::vector<MeanAccumulator> per;
+  MeanAccumulator all;
+  std::size_t last = static_cast<std::size_t>(-1);
+  explicit WindowStats(std::size_t n) : per(n) {}
+  void add(std::size_t w, double x) {
+    if (std::isnan(x)) return;
+    if (w != last) {
+      all.endBlock();
+      last = w;
+    }
+    per[w].add(x);
+    all.add(x);
+  }
+  MeanEstimate at(std::size_t w) const { return per[w].result(); }
+};
+
+// f(window index, time, value) for every sample of s inside the windows.
+template <class F>
+void forEachInWindows(const TimeSeries& s, const std::vector<Segment>& win, F&& f) {
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < s.size() && w < win.size(); ++i) {
+    const double t = s.t[i];
+    while (w < win.size() && t > win[w].end_s) ++w;
+    if (w == win.size()) break;
+    if (t >= win[w].start_s) f(w, t, s.v[i]);
+  }
+}
+
+void simpleStats(const MissionLog& log, const char* channel, const std::vector<Segment>& win, WindowStats& st) {
+  if (!log.has(channel)) return;
+  const TimeSeries s = log.series(channel);
+  forEachInWindows(s, win, [&](std::size_t w, double, double v) { st.add(w, v); });
+}
+
+bool inRange(double v, const seawater::ValidRange& r) { return v >= r.min && v <= r.max; }
+
+struct WaterResult {
+  MeanEstimate T, S, rho, p, z;
+  std::string salinity_source, density_source;
+  std::size_t skipped = 0;
+};
+
+// Water properties on the CTD's own time base inside the windows (and deeper
+// than min_depth_m). Salinity from the log, else PSS-78 from conductivity;
+// density from the log, else EOS-80 in situ at the sample's pressure.
+WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& win, const TimeSeries& depth,
+                            double latitude, double min_depth_m, SeriesModel model) {
+  WaterResult out;
+  const bool hasT = hasSamples(log, "temperature"), hasS = hasSamples(log, "salinity"),
+             hasC = hasSamples(log, "conductivity"), hasP = hasSamples(log, "pressure"),
+             hasRho = hasSamples(log, "density");
+  const char* base = hasT ? "temperature" : (hasRho ? "density" : nullptr);
+  if (!base) return out;
+  const TimeSeries b = log.series(base);
+  const TimeSeries sS = hasS ? log.series("salinity") : TimeSeries{};
+  const TimeSeries sC = hasC ? log.series("conductivity") : TimeSeries{};
+  const TimeSeries sP = hasP ? log.series("pressure") : TimeSeries{};
+  const TimeSeries sR = hasRho && hasT ? log.series("density") : TimeSeries{};
+  const double gap = 60.0;
+  SeriesCursor cS(sS, false, gap), cC(sC, false, gap), cP(sP, false, gap), cR(sR, false, gap), cZ(depth, false, gap);
+  MeanAccumulator aT, aS, aR, aP, aZ;
+  std::size_t last = static_cast<std::size_t>(-1);
+  out.salinity_source = hasS ? "log" : (hasC ? "PSS-78 from conductivity" : "");
+  out.density_source = hasRho ? "log" : "EOS-80 from temperature, salinity and pressure";
+  forEachInWindows(b, win, [&](std::size_t w, double t, double v) {
+    double p = hasP ? cP.at(t) : kNaN;
+    double z = cZ.at(t);
+    if (std::isnan(p) && !std::isnan(z)) p = seawater::pressureFromDepth(std::clamp(z, 0.0, 10600.0), latitude);
+    if (std::isnan(z) && !std::isnan(p)) z = seawater::depthFromPressure(std::clamp(p, 0.0, 11000.0), latitude);
+    if (!(z >= min_depth_m)) return;
+    if (w != last) {
+      for (MeanAccumulator* a : {&aT, &aS, &aR, &aP, &aZ}) a->endBlock();
+      last = w;
+    }
+    aZ.add(z);
+    if (!std::isnan(p)) aP.add(p);
+    if (!hasT) {  // density-only log
+      aR.add(v);
+      return;
+    }
+    const double T = v;
+    double S = hasS ? cS.at(t) : kNaN;
+    if (std::isnan(S) && hasC) {
+      const double C = cC.at(t);
+      if (inRange(C, seawater::kConductivityRange) && C > 0 && inRange(T, seawater::kTemperatureRange) &&
+          inRange(p, seawater::kPressureRange))
+        S = seawater::salinityFromConductivity(C, T, p);
+    }
+    aT.add(T);
+    if (!std::isnan(S)) aS.add(S);
+    double rho = hasRho ? cR.at(t) : kNaN;
+    if (!hasRho) {
+      if (inRange(S, seawater::kSalinityRange) && inRange(T, seawater::kTemperatureRange) &&
+          inRange(p, seawater::kPressureRange))
+        rho = seawater::density(S, T, p);
+      else
+        ++out.skipped;
+    }
+    if (!std::isnan(rho)) aR.add(rho);
+  });
+  out.T = aT.result(model);
+  out.S = aS.result(model);
+  out.rho = aR.result(model);
+  out.p = aP.result(model);
+  out.z = aZ.result(model);
+  return out;
+}
+
+double parseNumberAfter(const std::string& s, std::size_t pos) {
+  const char* begin = s.c_str() + pos;
+  char* end = nullptr;
+  const double v = std::strtod(begin, &end);
+  return end == begin ? kNaN : v;
+}
+
+nlohmann::json numOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+std::optional<double> latitudeFromMetadata(const MissionLog& log) {
+  for (const char* key : {"latitude", "lat"}) {
+    if (const std::string* v = log.metadataValue(key)) {
+      const double x = parseNumberAfter(*v, 0);
+      if (x >= -90 && x <= 90) return x;
+    }
+  }
+  if (const std::string* v = log.metadataValue("position")) {
+    const std::size_t k = v->find("lat");
+    if (k != std::string::npos) {
+      std::size_t q = k + 3;
+      while (q < v->size() && !(std::isdigit(static_cast<unsigned char>((*v)[q])) || (*v)[q] == '-' || (*v)[q] == '+')) ++q;
+      const double x = parseNumberAfter(*v, q);
+      if (x >= -90 && x <= 90) return x;
+    }
+  }
+  return std::nullopt;
+}
+
+GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::vector<std::string>& notes) {
+  GliderFlightConstants c;
+  c.mass_kg = v.mass_kg;
+  c.thermal_expansion_per_degC = v.hull.thermal_expansion_per_degC;
+  c.reference_temperature_degC = v.hull.reference_temperature_degC;
+  c.compressibility_per_dbar = v.hull.compressibility_per_dbar;
+  if (v.sections.contains("flight_model")) {
+    const JsonReader f(v.sections["flight_model"], v.file, "flight_model");
+    c.wing_area_m2 = f.numberIn("wing_area_m2", 1e-4, 100.0, c.wing_area_m2);
+    c.lift_slope_per_rad = f.numberIn("lift_slope_per_rad", 0.01, 100.0, c.lift_slope_per_rad);
+    c.induced_drag_per_rad2 = f.numberIn("induced_drag_per_rad2", 0.0, 1000.0, c.induced_drag_per_rad2);
+    if (f.has("compressibility_per_dbar")) c.compressibility_per_dbar = f.numberIn("compressibility_per_dbar", 0.0, 1e-3);
+    c.pitch_scale = f.numberIn("pitch_scale", 0.1, 10.0, 1.0);
+    c.pitch_offset_rad = units::degToRad(f.numberIn("pitch_offset_deg", -45.0, 45.0, 0.0));
+  } else {
+    notes.push_back("glider flight-model constants are gliderflight's Slocum defaults (S = 0.1 m2, lift slope 7.53 /rad, "
+                    "Cd1 = 10.5 /rad2): add a \"flight_model\" section to the profile for another glider");
+  }
+  if (!(c.compressibility_per_dbar > 0.0)) {
+    c.compressibility_per_dbar = 5e-6;
+    notes.push_back("hull compressibility not in the profile: gliderflight's 5e-10 1/Pa (5e-6 1/dbar) is used");
+  }
+  return c;
+}
+
+AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, const AnalysisOptions& o) {
+  AnalysisReport rep;
+  rep.vehicle_id = v.id;
+  rep.vehicle_kind = v.kind;
+  rep.log_name = o.log_name;
+  rep.rows = log.rowCount();
+  rep.duration_s = log.duration();
+  const bool glider = v.kind == "glider";
+  if (!o.installed_kg.empty() && o.installed_kg.size() != v.points.size())
+    throw InputError("installed", "has " + std::to_string(o.installed_kg.size()) + " values but the profile '" + v.id +
+                                      "' has " + std::to_string(v.points.size()) + " adjustment points",
+                     "give one kg value per adjustment point, in profile order");
+  const double latitude = latitudeFromMetadata(log).value_or(seawater::kDefaultLatitude_deg);
+
+  SegmentOptions so = o.segments;
+  so.glider = glider;
+  Segmentation seg = detectSegments(log, so);
+  for (const std::string& n : seg.notes) rep.notes.push_back(n);
+  const std::vector<Segment>& win = seg.operating;
+  if (win.empty())
+    rep.warnings.push_back(glider ? "no steady dive or climb long enough was found: nothing to estimate from"
+                                  : "no steady level-flight segment of at least " + fmt("%.0f", so.min_steady_s) +
+                                        " s was found: errors and estimates are not available");
+  const std::size_t nw = win.size();
+  const TimeSeries depth = depthSeries(log, latitude);
+
+  // --- per-window statistics, one channel at a time --------------------------
+  WindowStats zS(nw), zRate(nw), dErr(nw), pitch(nw), pErr(nw), roll(nw), speed(nw), rpm(nw), elev(nw);
+  {
+    const std::vector<double> rate = localRate(depth, so.rate_window_s, so.max_gap_s);
+    std::size_t i = 0;
+    forEachInWindows(depth, win, [&](std::size_t w, double t, double z) {
+      while (depth.t[i] < t) ++i;
+      zS.add(w, z);
+      zRate.add(w, rate[i]);
+    });
+  }
+  const bool hasDepthCmd = hasSamples(log, "depth_cmd");
+  if (hasDepthCmd) {
+    const TimeSeries c = log.series("depth_cmd");
+    SeriesCursor cur(c, true, kInf);
+    forEachInWindows(depth, win, [&](std::size_t w, double t, double z) { dErr.add(w, cur.at(t) - z); });
+  }
+  const bool hasPitchCmd = hasSamples(log, "pitch_cmd");
+  if (hasSamples(log, "pitch")) {
+    const TimeSeries p = log.series("pitch");
+    const TimeSeries c = hasPitchCmd ? log.series("pitch_cmd") : TimeSeries{};
+    SeriesCursor cur(c, true, kInf);
+    forEachInWindows(p, win, [&](std::size_t w, double t, double x) {
+      pitch.add(w, x);
+      if (!hasPitchCmd) return;
+      const double cmd = cur.at(t);
+      // A glider's pitch command belongs to one phase (dive < 0, climb > 0).
+      if (glider && !((win[w].phase == SegmentKind::kDive && cmd < 0) || (win[w].phase == SegmentKind::kClimb && cmd > 0)))
+        return;
+      pErr.add(w, x - cmd);
+    });
+  }
+  simpleStats(log, "roll", win, roll);
+  simpleStats(log, "speed", win, speed);
+  simpleStats(log, "prop_rpm", win, rpm);
+  simpleStats(log, "elevator", win, elev);
+
+  rep.depth_m = glider ? MeanEstimate{} : zS.all.result();
+  rep.depth_error_m = dErr.all.result();
+  rep.roll_deg = roll.all.result();
+  rep.pitch_at_steady_depth_deg = glider ? MeanEstimate{} : pitch.all.result();
+  if (hasPitchCmd) {
+    rep.pitch_error_deg = pErr.all.result();
+    rep.pitch_error_basis = glider ? "measured - commanded, during glides whose command has the phase's sign"
+                                   : "measured - commanded, in steady level flight";
+  } else if (!glider) {
+    rep.pitch_error_deg = rep.pitch_at_steady_depth_deg;
+    rep.pitch_error_basis = "pitch at steady depth (the log has no pitch_cmd; level flight should be at 0 deg)";
+  }
+  if (!hasDepthCmd && !glider) rep.warnings.push_back("the log has no depth_cmd channel: errors.depth_m is not available");
+
+  // --- water at operating depth ------------------------------------------------
+  std::vector<Segment> waterWin = win;
+  double waterMinDepth = -kInf;
+  if (glider || win.empty()) {
+    waterWin.clear();
+    for (const Segment& p : seg.phases)
+      if (p.kind != SegmentKind::kSurface) waterWin.push_back(p);
+    if (glider) waterMinDepth = o.glider_min_depth_m;
+  }
+  // Gliders profile through the water column: its stratification is signal.
+  const WaterResult water = waterProperties(log, waterWin, depth, latitude, waterMinDepth,
+                                            glider ? SeriesModel::kProfile : SeriesModel::kStationary);
+  rep.temperature_degC = water.T;
+  rep.salinity_psu = water.S;
+  rep.density_kgm3 = water.rho;
+  rep.pressure_dbar = water.p;
+  if (glider) rep.depth_m = water.z;
+  rep.salinity_source = water.salinity_source;
+  rep.density_source = water.density_source;
+  if (water.skipped > 0)
+    rep.warnings.push_back(std::to_string(water.skipped) + " CTD samples outside the EOS-80 range were not used for density");
+  double rho = water.rho.valid() ? water.rho.mean : kNaN;
+  if (!water.rho.valid()) {
+    rep.warnings.push_back("no in-situ density could be computed (no temperature/salinity or density channel): " +
+                           fmt("%.1f", o.default_density_kgm3) + " kg/m3 assumed");
+    rho = o.default_density_kgm3;
+  }
+
+  double installed = 0.0;
+  for (double m : o.installed_kg) installed += m;
+  if (!o.installed_kg.empty()) rep.details["installed_kg"] = o.installed_kg;
+
+  // --- physical estimation -------------------------------------------------
+  std::vector<double> segNb(nw, kNaN), segX(nw, kNaN);
+  if (!glider) {
+    std::string why;
+    const std::optional<SteadyHydroCoefficients> coeffs = steadyHydroFromProfile(v, why);
+    std::vector<SteadySegmentMeans> means(nw);
+    for (std::size_t w = 0; w < nw; ++w)
+      means[w] = {win[w].start_s, win[w].end_s, speed.at(w), pitch.at(w), roll.at(w), elev.at(w), zRate.at(w), rpm.at(w)};
+    AuvTrimContext ctx;
+    ctx.weight_n = (v.mass_kg + installed) * units::g0;
+    ctx.density_kgm3 = rho;
+    ctx.bg_measured_m = o.bg_m;
+    ctx.bg_profile_m = v.bg_m;
+    ctx.bg_profile_rel_sigma = o.bg_profile_rel_sigma;
+    ctx.coefficient_rel_sigma = o.coefficient_rel_sigma;
+    ctx.log_has_speed = hasSamples(log, "speed");
+    ctx.log_has_elevator = hasSamples(log, "elevator");
+    ctx.log_has_rpm = hasSamples(log, "prop_rpm");
+    const AuvTrimEstimate e = estimateAuvTrim(means, coeffs ? &*coeffs : nullptr, why, ctx);
+    rep.net_buoyancy_kg = {e.buoyancy_identified, e.buoyancy_identified ? e.net_buoyancy_kg : kNaN,
+                           e.buoyancy_identified ? e.net_buoyancy_sigma_kg : kNaN, e.buoyancy_why};
+    rep.cg_x_mm = {e.x_identified, e.x_identified ? units::mToMm(e.x_m) : kNaN,
+                   e.x_identified ? units::mToMm(e.x_sigma_m) : kNaN, e.x_why};
+    rep.cg_y_mm = {e.y_identified, e.y_identified ? units::mToMm(e.y_m) : kNaN,
+                   e.y_identified ? units::mToMm(e.y_sigma_m) : kNaN, e.y_why};
+    rep.cg_y_basis = e.y_basis;
+    segNb = e.segment_net_buoyancy_kg;
+    segX = e.segment_x_m;
+    for (const auto& n : e.notes) rep.notes.push_back(n);
+    for (const auto& w : e.warnings) rep.warnings.push_back(w);
+    nlohmann::json d;
+    d["model"] = "steady level flight: heave and pitch balance (Fossen form, CB origin) with the profile's hydrodynamics";
+    d["weight_kg"] = v.mass_kg + installed;
+    d["density_kgm3"] = rho;
+    d["bg_mm"] = units::mToMm(o.bg_m.value_or(v.bg_m));
+    d["bg_source"] = o.bg_m ? "--bg-mm" : "profile";
+    d["segments_used"] = e.segments_used;
+    d["chi2_per_dof"] = e.chi2_per_dof;
+    if (e.roll_static_known) d["roll_static_deg"] = {{"value", e.roll_static_deg}, {"sigma", e.roll_static_sigma_deg}};
+    if (e.elevator_bias_fitted)
+      d["elevator_zero_offset_deg"] = {{"value", e.elevator_bias_deg}, {"sigma", e.elevator_bias_sigma_deg}};
+    if (e.moment_combination_nm)
+      d["moment_about_planes"] = {{"definition", "W * x_G - l * (B - W), N m"},
+                                  {"value_nm", *e.moment_combination_nm},
+                                  {"sigma_nm", *e.moment_combination_sigma_nm},
+                                  {"plane_lever_m", *e.plane_lever_m}};
+    rep.details["auv_estimate"] = d;
+  } else {
+    rep.cg_x_mm.why_not = "not identifiable from this log because a glider's pitch is set by its battery position, "
+                          "not by a fixed CG (use the tank or pitch-trim procedure)";
+    rep.cg_y_mm.why_not = "not identifiable from this log because the glider's roll is set by its roll mass (use the tank procedure)";
+    std::vector<std::string> cnotes;
+    const GliderFlightConstants c = gliderConstantsFromProfile(v, cnotes);
+    for (const auto& n : cnotes) rep.notes.push_back(n);
+    std::string why;
+    if (!hasSamples(log, "pump_volume", 10)) why = "the log has no pump_volume channel (the buoyancy engine's volume)";
+    else if (!hasSamples(log, "pitch", 10)) why = "the log has no pitch channel";
+    else if (win.empty()) why = "no steady dive or climb was found";
+    if (const std::string* m = log.metadataValue("mass_kg")) {
+      const double lm = parseNumberAfter(*m, 0);
+      if (lm > 0 && std::abs(lm - v.mass_kg) > 0.05 * v.mass_kg)
+        rep.warnings.push_back("the log says mass_kg " + fmt("%.2f", lm) + " but the profile has " + fmt("%.2f", v.mass_kg) +
+                               " kg: the fit uses the profile mass (it matters only through density changes)");
+    }
+    GliderFitResult fit;
+    ReferenceState ref;
+    double pitchBiasSigma = 0.0;
+    std::string obsChannel;
+    if (why.empty()) {
+      // Observation time base: CTD pressure when it is at least as dense as
+      // depth (w = -dp/dt / (rho g), hydrostatic with the local density),
+      // else depth.
+      const LogChannel* pc = log.find("pressure");
+      const LogChannel* dc = log.find("depth");
+      const bool usePressure = pc && (!dc || pc->validCount() >= dc->validCount());
+      obsChannel = usePressure ? "pressure" : "depth";
+      const TimeSeries obs = log.series(obsChannel);
+      const std::vector<double> rate = localRate(obs, o.glider_rate_window_s, so.max_gap_s, 1.0);
+      const TimeSeries sPitch = log.series("pitch"), sPump = log.series("pump_volume");
+      const bool hasRho = hasSamples(log, "density"), hasT = hasSamples(log, "temperature");
+      const TimeSeries sRho = hasRho ? log.series("density") : TimeSeries{};
+      const TimeSeries sT = hasT ? log.series("temperature") : TimeSeries{};
+      const double gap = 60.0;
+      SeriesCursor cPitch(sPitch, false, gap), cPump(sPump, false, gap), cRho(sRho, false, gap), cT(sT, false, gap);
+      const double minPitch = units::degToRad(o.glider_min_pitch_deg);
+      std::vector<GlideSample> samples;
+      samples.reserve(obs.size() / 2);
+      std::size_t i = 0;
+      forEachInWindows(obs, win, [&](std::size_t w, double t, double x) {
+        while (obs.t[i] < t) ++i;
+        const double z = usePressure ? seawater::depthFromPressure(std::clamp(x, 0.0, 11000.0), latitude) : x;
+        if (!(z >= o.glider_min_depth_m && z <= o.glider_max_depth_m) || std::isnan(rate[i])) return;
+        GlideSample s;
+        s.pitch_rad = units::degToRad(cPitch.at(t));
+        const double th = c.pitch_scale * s.pitch_rad + c.pitch_offset_rad;
+        if (!(std::abs(th) >= minPitch)) return;
+        if ((win[w].phase == SegmentKind::kDive) != (th < 0)) return;
+        s.pump_m3 = cPump.at(t) * 1e-6;
+        s.density_kgm3 = hasRho ? cRho.at(t) : rho;
+        s.temperature_degC = hasT ? cT.at(t) : c.reference_temperature_degC;
+        s.pressure_dbar = usePressure ? x : seawater::pressureFromDepth(std::clamp(x, 0.0, 10600.0), latitude);
+        if (std::isnan(s.pump_m3) || !(s.density_kgm3 > 900) || std::isnan(s.temperature_degC)) return;
+        s.w_obs_mps = usePressure ? -rate[i] * 1e4 / (s.density_kgm3 * units::g0) : -rate[i];
+        s.block = static_cast<int>(w);
+        samples.push_back(s);
+      });
+      ref.density_kgm3 = rho;
+      ref.pressure_dbar = water.p.valid() ? water.p.mean : 0.0;
+      ref.temperature_degC = water.T.valid() ? water.T.mean : c.reference_temperature_degC;
+      if (!water.p.valid() || !water.T.valid()) {
+        double sp = 0, sT2 = 0;
+        for (const auto& s : samples) {
+          sp += s.pressure_dbar;
+          sT2 += s.temperature_degC;
+        }
+        if (!samples.empty()) {
+          if (!water.p.valid()) ref.pressure_dbar = sp / static_cast<double>(samples.size());
+          if (!water.T.valid()) ref.temperature_degC = sT2 / static_cast<double>(samples.size());
+        }
+      }
+      fit = fitSteadyGlide(samples, c, ref, o.glider_fit);
+      if (fit.samples >= 10 && o.glider_pitch_bias_sigma_deg > 0) {
+        GliderFlightConstants biased = c;
+        biased.pitch_offset_rad += units::degToRad(o.glider_pitch_bias_sigma_deg);
+        GliderFitOptions quick = o.glider_fit;
+        quick.max_jackknife_groups = 0;
+        const GliderFitResult b = fitSteadyGlide(samples, biased, ref, quick);
+        pitchBiasSigma = std::abs(b.net_buoyancy_kg - fit.net_buoyancy_kg);
+        fit.net_buoyancy_sigma_kg = std::hypot(fit.net_buoyancy_sigma_kg, pitchBiasSigma);
+      }
+      if (fit.samples < 10) why = "fewer than 10 steady-glide samples deeper than " + fmt("%.0f", o.glider_min_depth_m) +
+                                  " m with |pitch| >= " + fmt("%.0f", o.glider_min_pitch_deg) + " deg";
+    }
+    if (!why.empty()) {
+      rep.net_buoyancy_kg.why_not = "not identifiable from this log because " + why;
+      rep.mass_to_add_g.why_not = rep.net_buoyancy_kg.why_not;
+    } else {
+      if (!fit.converged) rep.warnings.push_back("glider flight-model fit: " + fit.message);
+      rep.net_buoyancy_kg = {true, fit.net_buoyancy_kg, fit.net_buoyancy_sigma_kg, ""};
+      const double target = o.target_density_kgm3.value_or(ref.density_kgm3);
+      rep.target_density_kgm3 = target;
+      // Ballast goes inside the hull (no volume change): neutral when
+      // m' = rho_target V_op, V_op = (m + nb) / rho_ref.
+      const double k = target / ref.density_kgm3;
+      rep.mass_to_add_g = {true, 1000.0 * (k * (c.mass_kg + fit.net_buoyancy_kg) - c.mass_kg),
+                           1000.0 * k * fit.net_buoyancy_sigma_kg, ""};
+      const double Vop = (c.mass_kg + fit.net_buoyancy_kg) / ref.density_kgm3;
+      nlohmann::json d;
+      d["model"] = "steady glide (Merckelbach et al. 2010, gliderflight steady state), fitted net buoyancy and Cd0";
+      d["observation_channel"] = obsChannel;
+      d["mass_kg"] = c.mass_kg;
+      d["Cd0"] = fit.Cd0;
+      d["Cd0_sigma"] = fit.Cd0_sigma;
+      d["hull_volume_m3"] = fit.hull_volume_m3;
+      d["neutral_density_kgm3"] = c.mass_kg / Vop;
+      d["rms_start_mps"] = fit.rms_start_mps;
+      d["rms_mps"] = fit.rms_mps;
+      d["residual_lag1"] = fit.residual_lag1;
+      d["samples"] = fit.samples;
+      d["jackknife_groups"] = fit.groups;
+      d["sigma_ar1_kg"] = fit.sigma_ar1_kg;
+      d["sigma_jackknife_kg"] = fit.sigma_jackknife_kg;
+      d["sigma_pitch_bias_kg"] = pitchBiasSigma;
+      d["pitch_bias_sigma_deg"] = o.glider_pitch_bias_sigma_deg;
+      d["reference"] = {{"density_kgm3", ref.density_kgm3}, {"pressure_dbar", ref.pressure_dbar},
+                        {"temperature_degC", ref.temperature_degC}};
+      d["constants"] = {{"wing_area_m2", c.wing_area_m2}, {"lift_slope_per_rad", c.lift_slope_per_rad},
+                        {"induced_drag_per_rad2", c.induced_drag_per_rad2},
+                        {"compressibility_per_dbar", c.compressibility_per_dbar},
+                        {"thermal_expansion_per_degC", c.thermal_expansion_per_degC},
+                        {"pitch_scale", c.pitch_scale}, {"pitch_offset_deg", units::radToDeg(c.pitch_offset_rad)}};
+      rep.details["glider_fit"] = d;
+    }
+  }
+
+  // --- classic mode ------------------------------------------------------------
+  if (o.classic) {
+    const classic::ClassicReport cr = classic::classicAnalysis(log);
+    auto val = [](const classic::ClassicValue& x, bool has) {
+      if (!has) return nlohmann::json(nullptr);
+      nlohmann::json j = {{"value", numOrNull(x.value)}, {"samples", x.samples}};
+      if (x.index_clamped) j["index_clamped"] = true;
+      return j;
+    };
+    rep.details["classic"] = {{"source", "Lillemoen 2014 App. D.1-D.4 as written (40-60 % window, exact equality tests)"},
+                              {"depth_error_m", val(cr.depth_error_m, cr.has_depth)},
+                              {"pitch_error_deg", val(cr.pitch_error_deg, cr.has_pitch)},
+                              {"pitch_at_stable_depth_deg", val(cr.pitch_at_stable_depth_deg, cr.has_pitch_depth)},
+                              {"roll_error_deg", val(cr.roll_error_deg, cr.has_roll)}};
+  }
+
+  // --- segments ------------------------------------------------------------------
+  for (const Segment& p : seg.phases) rep.segments.push_back({p.kind, p.start_s, p.end_s, false});
+  for (std::size_t w = 0; w < nw; ++w) {
+    SegmentReport s;
+    s.kind = win[w].kind;
+    s.start_s = win[w].start_s;
+    s.end_s = win[w].end_s;
+    s.used = true;
+    s.depth_m = zS.at(w).mean;
+    s.depth_error_m = dErr.at(w).mean;
+    s.pitch_deg = pitch.at(w).mean;
+    s.pitch_error_deg = pErr.at(w).mean;
+    s.roll_deg = roll.at(w).mean;
+    s.speed_mps = speed.at(w).mean;
+    s.prop_rpm = rpm.at(w).mean;
+    s.elevator_deg = elev.at(w).mean;
+    s.net_buoyancy_kg = segNb[w];
+    s.cg_x_mm = units::mToMm(segX[w]);
+    rep.segments.push_back(s);
+  }
+  std::stable_sort(rep.segments.begin(), rep.segments.end(),
+                   [](const SegmentReport& a, const SegmentReport& b) { return a.start_s < b.start_s; });
+  return rep;
+}
+
+}  // namespace auv::analysis
