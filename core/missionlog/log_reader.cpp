@@ -5,13 +5,21 @@
 #include <fstream>
 
 #include "common/input_error.h"
+#include "missionlog/delimited_text_reader.h"
 #include "missionlog/interchange_csv.h"
+#include "missionlog/netcdf_reader.h"
+#include "missionlog/slocum_ascii_reader.h"
 
 namespace auv {
 
 LogReaderRegistry LogReaderRegistry::withBuiltinReaders() {
   LogReaderRegistry r;
+  // Binary and tagged formats first (magic bytes), then the interchange CSV,
+  // then the generic text reader, which would accept an interchange file too.
+  r.add(std::make_unique<GliderNetcdfReader>());
+  r.add(std::make_unique<SlocumAsciiReader>());
   r.add(std::make_unique<InterchangeCsvReader>());
+  r.add(std::make_unique<DelimitedTextReader>());
   return r;
 }
 
