@@ -68,7 +68,7 @@ ActuatorDemand DepthAutopilot::update(const Measurement& m, const Setpoint& sp, 
   const double bias = std::clamp(cfg_.pitch_bias.kp * z_err + cfg_.pitch_bias.ki * int_z_ +
                                      cfg_.pitch_bias.kd * m.depth_rate_mps,
                                  -cfg_.pitch_bias_max_rad, cfg_.pitch_bias_max_rad);
-  const double theta_d = sp.pitch_rad + w_s * bias;
+  const double theta_d = sp.pitch_is_demand ? sp.pitch_rad : sp.pitch_rad + w_s * bias;
   const double theta_err = theta_d - m.pitch_rad;
 
   if (has_thrusters) {

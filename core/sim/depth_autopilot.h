@@ -15,6 +15,17 @@ struct PidGains {
   double kp = 0.0, ki = 0.0, kd = 0.0;
 };
 
+// Heading hold, a PI-D from heading error [rad] to rudder [rad, log sign]
+// riding along with the depth autopilot at its sample rate (heading_control.h).
+struct HeadingHoldConfig {
+  bool enabled = false;  // off: rudder at zero, heading follows the dynamics
+  PidGains gains;
+  double max_rudder_rad = 0.35;  // the autopilot's own limit, inside the rudder's travel
+  // Conditional integration: the integral learns only near the set heading,
+  // so a long saturated turn does not wind it up into an overshoot.
+  double integrate_within_rad = 0.175;
+};
+
 struct DepthAutopilotConfig {
   double sample_time_s = 0.2;  // paper: 5 Hz
   // eq. 22, Z [N] from depth error [m]; eq. 23, centre-of-rotation shift [m]
@@ -35,6 +46,7 @@ struct DepthAutopilotConfig {
   double u_th_mid_mps = 0.85, u_th_width_mps = 0.03;
   double u_s_mid_mps = 0.5, u_s_width_mps = 0.04;
   double hover_preload_factor = 1.2;  // sec. 7
+  HeadingHoldConfig heading;
 };
 
 struct Measurement {
@@ -49,6 +61,9 @@ struct Setpoint {
   double depth_m = 0.0;
   double pitch_rad = 0.0;    // hover pitch reference and flight pitch offset
   double prop_demand = 0.0;  // passed through (open-loop speed, as in the paper)
+  // Replay of a recorded pitch command: pitch_rad is the whole pitch demand
+  // (the depth loop's bias is not added; the planes track it directly).
+  bool pitch_is_demand = false;
 };
 
 struct ActuatorDemand {

@@ -213,8 +213,8 @@ ForceBreakdown Dynamics::breakdown(const StateVector& s) const {
 }
 
 void Dynamics::rk4Step(StateVector& s, double dt) const {
-  const Trig1 th{s[kTheta], std::sin(s[kTheta]), std::cos(s[kTheta])};
-  const Trig1 ph{s[kPhi], std::sin(s[kPhi]), std::cos(s[kPhi])};
+  const Trig1& th = last_theta_ = Trig1{s[kTheta], std::sin(s[kTheta]), std::cos(s[kTheta])};
+  const Trig1& ph = last_phi_ = Trig1{s[kPhi], std::sin(s[kPhi]), std::cos(s[kPhi])};
   const StateVector k1 = evaluate<false>(s, &th, &ph, nullptr);
   const StateVector k2 = evaluate<false>(s + 0.5 * dt * k1, &th, &ph, nullptr);
   const StateVector k3 = evaluate<false>(s + 0.5 * dt * k2, &th, &ph, nullptr);

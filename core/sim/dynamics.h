@@ -62,6 +62,10 @@ class Dynamics {
   ForceBreakdown breakdown(const StateVector& s) const;
   // Classical fourth-order Runge-Kutta over dt with the step inputs held.
   void rk4Step(StateVector& s, double dt) const;
+  // Pitch and roll with their sines and cosines at the start of the last
+  // rk4Step, for the heading kinematics that ride along with the step.
+  const Trig1& lastStepPitch() const { return last_theta_; }
+  const Trig1& lastStepRoll() const { return last_phi_; }
 
   double massKg() const { return mass_; }
   const Eigen::Vector3d& cgRelativeToCb() const { return r_g_; }
@@ -94,6 +98,7 @@ class Dynamics {
   StepInputs in_;
   Eigen::Vector4d m_diag_ = Eigen::Vector4d::Ones(), m_inv_ = Eigen::Vector4d::Ones();
   StepConstants k_;
+  mutable Trig1 last_theta_, last_phi_;
 };
 
 }  // namespace auv::sim

@@ -1,5 +1,6 @@
 #include "sim/mission_plan.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 
@@ -9,9 +10,8 @@
 #include "vehicle/json_reader.h"
 
 namespace auv::sim {
-namespace {
 
-WaterColumn readWater(const JsonReader& w) {
+WaterColumn parseWater(const JsonReader& w) {
   if (w.has("cast")) {
     std::vector<CtdPoint> cast;
     for (const JsonReader& level : w.array("cast")) {
@@ -29,20 +29,41 @@ WaterColumn readWater(const JsonReader& w) {
                               w.numberIn("salinity_psu", 0.0, 42.0, 0.0));
 }
 
+WaterColumn loadWaterFile(const std::string& file) {
+  const nlohmann::json doc = JsonReader::parseFile(file);
+  const JsonReader root(doc, file);
+  return parseWater(root.has("water") ? root.child("water") : root);
+}
+
+namespace {
+
 DepthLeg readLeg(const JsonReader& l) {
   const std::string type = l.text("type");
   DepthLeg leg;
   leg.duration_s = l.numberIn("duration_s", 1e-3, 1e7);
   leg.depth_m = l.numberIn("depth_m", 0.0, 11000.0);
   leg.pitch_rad = units::degToRad(l.numberIn("pitch_deg", -45.0, 45.0, 0.0));
+  if (l.has("heading_deg")) leg.heading_rad = units::degToRad(l.numberIn("heading_deg", 0.0, 360.0));
   if (type == "hover") {
     if (l.has("prop_demand")) l.fail("prop_demand", "a hover leg has no propeller demand", "use type \"depth\"");
     leg.prop_demand = 0.0;
   } else if (type == "depth") {
     leg.prop_demand = l.numberIn("prop_demand", 0.0, 1e4);
   } else {
-    l.fail("type", "unknown leg type '" + type + "'", "use \"hover\" or \"depth\"");
+    l.fail("type", "unknown leg type '" + type + "'", "use \"hover\", \"depth\" or (gliders) \"yo\"");
   }
+  return leg;
+}
+
+YoLeg readYoLeg(const JsonReader& l) {
+  YoLeg leg;
+  leg.duration_s = l.numberIn("duration_s", 1e-3, 1e7);
+  leg.dive_to_m = l.numberIn("dive_to_m", 0.0, 11000.0);
+  leg.climb_to_m = l.numberIn("climb_to_m", 0.0, 11000.0);
+  if (!(leg.dive_to_m > leg.climb_to_m)) l.fail("dive_to_m", "must be deeper than climb_to_m", "e.g. 100 and 10");
+  if (l.has("pump_cm3")) leg.pump_m3 = l.numberIn("pump_cm3", 1.0, 1e5) * 1e-6;
+  if (l.has("dive_pitch_deg")) leg.dive_pitch_rad = units::degToRad(l.numberIn("dive_pitch_deg", -80.0, -1.0));
+  if (l.has("climb_pitch_deg")) leg.climb_pitch_rad = units::degToRad(l.numberIn("climb_pitch_deg", 1.0, 80.0));
   return leg;
 }
 
@@ -65,17 +86,39 @@ MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file)
   plan.file = file;
   plan.vehicle = root.text("vehicle");
   plan.description = root.text("description", "");
-  plan.water = readWater(root.child("water"));
+  plan.water = parseWater(root.child("water"));
 
   Scenario& sc = plan.scenario;
   if (auto init = root.optionalChild("initial")) {
     sc.initial_depth_m = init->numberIn("depth_m", -1.0, 11000.0, 0.0);
     sc.initial_speed_mps = init->numberIn("speed_mps", 0.0, 20.0, 0.0);
     sc.initial_pitch_rad = units::degToRad(init->numberIn("pitch_deg", -90.0, 90.0, 0.0));
+    sc.initial_heading_rad = units::degToRad(init->numberIn("heading_deg", 0.0, 360.0, 0.0));
     if (init->has("net_buoyancy_n")) sc.net_buoyancy_n = init->numberIn("net_buoyancy_n", -1e5, 1e5);
   }
-  for (const JsonReader& l : root.array("legs")) sc.legs.push_back(readLeg(l));
-  if (sc.legs.empty()) root.fail("legs", "no legs", "add at least one hover or depth leg");
+  if (root.has("installed_kg")) plan.installed_kg = root.numbers("installed_kg");
+  if (auto e = root.optionalChild("ballast_error")) {
+    sc.ballast_error.net_buoyancy_kg = e->numberIn("net_buoyancy_kg", -1e4, 1e4, 0.0);
+    sc.ballast_error.cg_shift_m = {units::mmToM(e->numberIn("cg_x_mm", -1e4, 1e4, 0.0)),
+                                   units::mmToM(e->numberIn("cg_y_mm", -1e4, 1e4, 0.0)),
+                                   units::mmToM(e->numberIn("cg_z_mm", -1e4, 1e4, 0.0))};
+  }
+  GliderScenario& gl = plan.glider;
+  for (const JsonReader& l : root.array("legs")) {
+    const bool yo = l.text("type") == "yo";
+    if ((yo && !sc.legs.empty()) || (!yo && !gl.legs.empty())) {
+      l.fail("type", "a plan flies either yo legs (gliders) or hover/depth legs, not both", "split the plan");
+    }
+    if (yo) {
+      gl.legs.push_back(readYoLeg(l));
+    } else {
+      sc.legs.push_back(readLeg(l));
+    }
+  }
+  if (sc.legs.empty() && gl.legs.empty()) root.fail("legs", "no legs", "add at least one hover, depth or yo leg");
+  if (!gl.legs.empty() && root.has("events")) {
+    root.fail("events", "buoyancy events are not simulated for gliders", "remove \"events\" from a yo plan");
+  }
   if (root.has("events")) {
     const double end = scenarioDuration(sc);
     for (const JsonReader& e : root.array("events")) {
@@ -90,6 +133,12 @@ MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file)
                                   units::mmToM(m.numberIn("z_mm", -1e5, 1e5))}});
     }
   }
+
+  gl.extra_masses = sc.extra_masses;
+  gl.net_buoyancy_n = sc.net_buoyancy_n;
+  gl.ballast_error = sc.ballast_error;
+  gl.initial_depth_m = std::max(0.0, sc.initial_depth_m);
+  gl.initial_heading_rad = sc.initial_heading_rad;
 
   SimOptions& o = plan.options;
   if (auto opt = root.optionalChild("options")) {
@@ -106,12 +155,34 @@ MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file)
       o.noise.pitch_rate_radps = units::degToRad(n->numberIn("pitch_rate_degps", 0.0, 90.0, 0.0));
       o.noise.roll_rad = units::degToRad(n->numberIn("roll_deg", 0.0, 45.0, 0.0));
       o.noise.speed_mps = n->numberIn("speed_mps", 0.0, 10.0, 0.0);
+      o.noise.heading_rad = units::degToRad(n->numberIn("heading_deg", 0.0, 45.0, 0.0));
+      o.noise.temperature_degC = n->numberIn("temperature_degC", 0.0, 10.0, 0.0);
+      o.noise.salinity_psu = n->numberIn("salinity_psu", 0.0, 10.0, 0.0);
+      o.noise.pressure_dbar = n->numberIn("pressure_dbar", 0.0, 100.0, 0.0);
     }
   }
   return plan;
 }
 
 MissionPlan loadMissionPlan(const std::string& file) { return parseMissionPlan(JsonReader::parseFile(file), file); }
+
+GliderScenario resolveGliderScenario(const MissionPlan& plan, const VehicleProfile& profile) {
+  GliderScenario sc = plan.glider;
+  if (!plan.installed_kg.empty()) {
+    const std::vector<MassItem> w = installedWeights(profile, plan.installed_kg);
+    sc.extra_masses.insert(sc.extra_masses.begin(), w.begin(), w.end());
+  }
+  return sc;
+}
+
+Scenario resolveScenario(const MissionPlan& plan, const VehicleProfile& profile) {
+  Scenario sc = plan.scenario;
+  if (!plan.installed_kg.empty()) {
+    const std::vector<MassItem> w = installedWeights(profile, plan.installed_kg);
+    sc.extra_masses.insert(sc.extra_masses.begin(), w.begin(), w.end());
+  }
+  return sc;
+}
 
 SimVehicle loadSimVehicle(const VehicleProfile& profile, const std::string& resource_dir) {
   if (profile.sections.contains("hydrodynamics")) {

@@ -1,5 +1,7 @@
 #include "sim/model_loader.h"
 
+#include <cmath>
+
 #include "common/units.h"
 #include "vehicle/json_reader.h"
 
@@ -123,6 +125,14 @@ VehicleModel loadVehicleModel(const VehicleProfile& profile, const nlohmann::jso
   v.hydro = readHydro(hydro);
   readActuators(root.child("actuators"), v);
   readAssumptions(root.child("sim_assumptions"), v);
+  // Yaw by symmetry with pitch (axisymmetric hull, cruciform tail).
+  v.yaw.Izz_kgm2 = v.body.Iyy_kgm2;
+  v.yaw.Nrdot_kgm2 = v.hydro.Mqdot_kgm2;
+  v.yaw.Nr_prime = v.hydro.Mq_prime;
+  v.yaw.Nrr_kgm2 = v.hydro.Mqq_kgm2;
+  v.yaw.N_uud_per_deg = std::abs(v.planes.M_uud_per_deg);
+  v.yaw.rudder_max_deg = v.planes.max_deg;
+  v.yaw.rudder_rate_deg_per_s = v.planes.rate_deg_per_s;
   return v;
 }
 
@@ -155,6 +165,15 @@ DepthAutopilotConfig loadAutopilotConfig(const nlohmann::json& doc, const std::s
   c.u_th_width_mps = a.numberIn("thruster_transition_width_mps", 1e-4, 20.0, c.u_th_width_mps);
   c.u_s_mid_mps = a.numberIn("plane_mid_speed_mps", 0.0, 20.0);
   c.u_s_width_mps = a.numberIn("plane_transition_width_mps", 1e-4, 20.0);
+  if (a.has("heading")) {
+    c.heading.enabled = true;
+    c.heading.gains = readGains(a, "heading", "deg_per_deg", "deg_per_deg_s", "deg_s_per_deg", 1.0);
+    if (c.heading.gains.kp < 0.0) {
+      a.fail("heading.K_P_deg_per_deg", "must be >= 0 (positive rudder turns the bow to starboard)", "flip the sign");
+    }
+    c.heading.max_rudder_rad = a.numberIn("heading_max_rudder_deg", 0.0, 90.0, 20.0) * deg;
+    c.heading.integrate_within_rad = a.numberIn("heading_integrate_within_deg", 0.0, 180.0, 10.0) * deg;
+  }
   return c;
 }
 

@@ -17,6 +17,11 @@ struct SensorNoise {
   double pitch_rate_radps = 0.0;
   double roll_rad = 0.0;
   double speed_mps = 0.0;
+  // Logged only (the autopilot does not use them except heading).
+  double heading_rad = 0.0;
+  double temperature_degC = 0.0;
+  double salinity_psu = 0.0;
+  double pressure_dbar = 0.0;
 };
 
 class GaussianSource {

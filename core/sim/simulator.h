@@ -5,11 +5,13 @@
 // the water column at the current depth. Everything the step loop needs is
 // sized before it starts; the loop itself does not allocate.
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
 #include "hydrostatics/mass_properties.h"
 #include "sim/depth_autopilot.h"
+#include "sim/flown_mass.h"
 #include "sim/sensor_noise.h"
 #include "sim/sim_trace.h"
 #include "sim/vehicle_model.h"
@@ -23,6 +25,9 @@ struct DepthLeg {
   double depth_m = 0.0;
   double prop_demand = 0.0;
   double pitch_rad = 0.0;
+  // Heading set point (0..2 pi); NaN keeps the previous leg's (or the
+  // initial) heading. Used only by a vehicle with heading hold.
+  double heading_rad = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A sudden change of net buoyancy, e.g. a weight dropped on or taken off
@@ -36,15 +41,21 @@ struct Scenario {
   std::vector<DepthLeg> legs;
   std::vector<BuoyancyChange> buoyancy_changes;  // any order
   // Ballast as installed relative to the profile's reference configuration,
-  // positions in the profile's frame (what the ballast tools produce).
+  // positions in the profile's frame (what the ballast tools produce):
+  // installed adjustment weights (installedWeights) and other changes.
   std::vector<MassItem> extra_masses;
   // If set: trim the weight (a mass at the CG) so that B - W equals this at
   // the start depth, as when a vehicle is ballasted in the test tank.
   std::optional<double> net_buoyancy_n;
+  // Applied after the above: the known error a round-trip test recovers.
+  BallastError ballast_error;
   double initial_depth_m = 0.0;
   double initial_pitch_rad = 0.0;
   double initial_roll_rad = 0.0;
+  double initial_heading_rad = 0.0;
   double initial_speed_mps = 0.0;  // > 0: also starts the propeller at the first leg's demand
+
+  VehicleLoading loading() const { return {extra_masses, net_buoyancy_n, ballast_error}; }
 };
 
 struct SimOptions {

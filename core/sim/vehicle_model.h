@@ -94,6 +94,23 @@ struct PowerModel {
   double fins_w_per_m2s2_deg = 0.0;      // P = idle + k u^2 |delta|
 };
 
+// Yaw of an axisymmetric hull with a cruciform tail, taken by symmetry from
+// the pitch plane (I_zz = I_yy, N_rdot = M_qdot, N_r' = M_q', N_|r|r = M_|q|q,
+// rudder = stern planes): the derivatives we have, no invented ones. Sway is
+// neglected (v = 0) and yaw has no restoring moment, so heading is decoupled
+// from the vertical plane (docs/decisions/sim-heading.md). Rudder angle in the
+// interchange-log sign: trailing edge to starboard positive, which turns the
+// bow to starboard (heading increases).
+struct YawModel {
+  double Izz_kgm2 = 0.0;
+  double Nrdot_kgm2 = 0.0;
+  double Nr_prime = 0.0;        // N_r = 0.5 rho L^4 |u| N_r'
+  double Nrr_kgm2 = 0.0;        // N_|r|r
+  double N_uud_per_deg = 0.0;   // yaw moment per (m/s)^2 per degree of rudder, > 0
+  double rudder_max_deg = 30.0;
+  double rudder_rate_deg_per_s = 40.0;
+};
+
 inline constexpr int kMaxThrusters = 2;
 
 struct VehicleModel {
@@ -105,6 +122,7 @@ struct VehicleModel {
   int thruster_count = 0;
   ThrusterDragFit thruster_drag;
   SternPlanes planes;
+  YawModel yaw;
   PowerModel power;
 };
 

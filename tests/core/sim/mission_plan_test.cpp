@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "common/input_error.h"
 #include "common/units.h"
@@ -38,8 +39,9 @@ TEST(MissionPlan, Delphin2HoverPlanReproducesFigure14b) {
 
 TEST(MissionPlan, HuginSurveyPlanFliesItsLegsInTheCast) {
   const MissionPlan plan = loadMissionPlan(kRes + "/examples/hugin1000_survey.plan.json");
-  const SimVehicle v = loadSimVehicle(loadVehicleProfile(kRes + "/vehicles/hugin1000.json"), kRes);
-  const SimTrace tr = simulate(v.model, v.autopilot, plan.water, plan.scenario, plan.options);
+  const VehicleProfile profile = loadVehicleProfile(kRes + "/vehicles/hugin1000.json");
+  const SimVehicle v = loadSimVehicle(profile, kRes);
+  const SimTrace tr = simulate(v.model, v.autopilot, plan.water, resolveScenario(plan, profile), plan.options);
   EXPECT_NEAR(tr.time_s.back(), 6300.0, 1e-6);
   auto at = [&](double t) {
     const auto it = std::lower_bound(tr.time_s.begin(), tr.time_s.end(), t - 1e-9);
@@ -48,7 +50,29 @@ TEST(MissionPlan, HuginSurveyPlanFliesItsLegsInTheCast) {
   EXPECT_NEAR(tr.depth_m[at(2100)], 50.0, 0.2);   // end of the 50 m leg (noise 2 cm)
   EXPECT_NEAR(tr.depth_m[at(3900)], 100.0, 0.2);  // end of the 100 m leg
   EXPECT_NEAR(tr.speed_mps[at(3900)], 2.0, 0.06);
-  EXPECT_NEAR(tr.salinity_psu[at(3900)], 35.0, 0.01);  // water from the cast
+  EXPECT_NEAR(tr.salinity_psu[at(3900)], 35.0, 0.015);  // water from the cast (+ 3 mPSU noise)
+  EXPECT_NEAR(units::radToDeg(tr.heading_rad[at(3900)]), 180.0, 0.5);  // reciprocal survey line
+  // Trimmed to +4.9 N at the start depth; sea water denser below: lighter.
+  EXPECT_NEAR(tr.truth.net_buoyancy_start_n, 4.9, 1e-9);
+  EXPECT_GT(tr.net_buoyancy_n[at(3900)], 4.9 + 5.0);
+  // plan.scenario is complete for a plan without installed weights.
+  EXPECT_EQ(resolveScenario(plan, profile).extra_masses.size(), plan.scenario.extra_masses.size());
+}
+
+TEST(MissionPlan, BallastErrorPlanCarriesItsKnownError) {
+  const MissionPlan plan = loadMissionPlan(kRes + "/examples/hugin1000_ballast_error.plan.json");
+  EXPECT_EQ(plan.installed_kg, (std::vector<double>{7.2, 7.2, 25.7, 25.7}));
+  EXPECT_DOUBLE_EQ(plan.scenario.ballast_error.net_buoyancy_kg, 3.0);
+  EXPECT_DOUBLE_EQ(plan.scenario.ballast_error.cg_shift_m.x(), 0.005);
+  EXPECT_TRUE(std::isnan(plan.scenario.legs[0].heading_rad));
+  EXPECT_DOUBLE_EQ(plan.scenario.legs[1].heading_rad, units::degToRad(180.0));
+  VehicleProfile delphin = loadVehicleProfile(kRes + "/vehicles/delphin2.json");
+  try {
+    (void)resolveScenario(plan, delphin);  // 4 masses for 2 points
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "installed");
+  }
 }
 
 TEST(MissionPlan, ErrorsNameTheField) {
