@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "common/input_error.h"
+#include "vehicle/json_reader.h"
 #include "vehicle/profile_loader.h"
 
 namespace fs = std::filesystem;
@@ -34,7 +35,18 @@ VehicleProfile VehicleCatalog::load(const std::string& id_or_path) const {
                      "use one of: " + (known.empty() ? std::string("(none found in ") + dir_ + ")" : known) +
                          ", or a path to a profile .json");
   }
-  return loadVehicleProfile(file.string());
+  VehicleProfile v = loadVehicleProfile(file.string());
+  mergeCompanionSections(v, (fs::path(dir_).parent_path() / "sim" / (id_or_path + "_hydrodynamics.json")).string());
+  return v;
+}
+
+void mergeCompanionSections(VehicleProfile& v, const std::string& companion_file) {
+  if (v.sections.contains("hydrodynamics") || !fs::exists(companion_file)) return;
+  const nlohmann::json doc = JsonReader::parseFile(companion_file);
+  for (const auto& [key, value] : doc.items()) {
+    if (value.is_object() && !v.sections.contains(key)) v.sections[key] = value;
+  }
+  v.sections_file = companion_file;
 }
 
 }  // namespace auv

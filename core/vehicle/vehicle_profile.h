@@ -66,6 +66,7 @@ struct VehicleProfile {
   // Vehicle-specific sections ("slocum", "hydrodynamics", ...) that the
   // module owning them parses and validates with JsonReader.
   nlohmann::json sections = nlohmann::json::object();
+  std::string sections_file;  // companion file the estimated sections came from, if any
 
   const AdjustmentPoint* findPoint(const std::string& point_name) const;
 };
