@@ -1,0 +1,276 @@
+// auvballast plan: pre-mission mode. What the last mission showed (an
+// analysis report, or the history's latest analysis), the pieces installed
+// now (flags or history) and the next mission's water (flags or the last
+// mission's) -> which pieces to add or remove where (core/planning). This
+// file only maps flags and history records; every number comes from core.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <iostream>
+#include <memory>
+
+#include "cli_context.h"
+#include "commands.h"
+#include "common/input_error.h"
+#include "history/ballasting_file.h"
+#include "history/configuration_id.h"
+#include "history/staleness.h"
+#include "history/store.h"
+#include "history/transaction.h"
+#include "number_list.h"
+#include "planning/pre_mission_plan.h"
+#include "seawater/seawater.h"
+#include "vehicle/json_reader.h"
+#include "vehicle/vehicle_catalog.h"
+
+namespace auv::cli {
+namespace {
+
+struct PlanOpts {
+  std::string vehicle, config, report, installed, temperature, salinity, depth, max_depth, latitude = "45",
+      policy = "exact", sigma_factor = "1.645", json, history;
+  bool optional_pieces = false, accept = false, no_save = false, no_surface_check = false;
+};
+
+// What the plan starts from, wherever it came from.
+struct Sources {
+  std::vector<double> installed_kg;
+  std::optional<double> total_mass_kg;  // recorded vehicle mass with those pieces
+  std::optional<RecordId> analysis_id;
+  std::optional<TimePoint> measured_at;  // of the water the estimate holds in (history only)
+  std::string report_name;
+  nlohmann::json report;
+};
+
+std::vector<double> installedFromHistory(HistoryStore& store, const std::string& config, const VehicleProfile& v,
+                                         Sources& s) {
+  const auto st = store.latestInstalled(config, nowUtc());
+  if (!st) {
+    throw InputError("installed", "the history has no installed pieces for configuration " + config,
+                     "give --installed FS,FP,AS,AP (kg at each point, profile order)");
+  }
+  std::vector<double> kg(v.points.size(), 0.0);
+  for (const InstalledPoint& p : st->points) {
+    const auto it = std::find_if(v.points.begin(), v.points.end(), [&](const AdjustmentPoint& a) { return a.name == p.name; });
+    if (it == v.points.end()) {
+      throw InputError("installed", "the history names point '" + p.name + "', which vehicle " + v.id + " does not have",
+                       "give --installed for this vehicle");
+    }
+    kg[static_cast<std::size_t>(it - v.points.begin())] = p.mass_kg;
+  }
+  s.total_mass_kg = st->total_mass_kg;
+  return kg;
+}
+
+std::optional<double> number(const nlohmann::json& j, const char* k) {
+  if (j.contains(k) && j[k].is_number()) return j[k].get<double>();
+  return std::nullopt;
+}
+
+// An analysis without a physical estimate (e.g. imported from a thesis
+// ballasting file) still carries the deviations the classic table reads;
+// the mass then comes from the recorded total weight, as in the thesis.
+TrimEstimate deviationsOnlyEstimate(HistoryStore* store, const std::string& config, const Sources& s) {
+  const nlohmann::json& r = s.report;
+  TrimEstimate e;
+  const nlohmann::json errors = r.contains("errors") && r["errors"].is_object() ? r["errors"] : nlohmann::json::object();
+  e.depth_error_m = number(errors, "depth_m") ? number(errors, "depth_m") : number(r, kDepthDeviationKey);
+  e.pitch_error_deg = number(errors, "pitch_deg") ? number(errors, "pitch_deg") : number(r, kPitchDeviationKey);
+  e.roll_deg = number(errors, "roll_deg") ? number(errors, "roll_deg") : number(r, kRollDeviationKey);
+  std::optional<WaterCondition> w;
+  if (store) w = store->latestWater(config, nowUtc(), true);
+  if (!w || !w->temperature_degC) {
+    throw InputError("water", "no measured water for configuration " + config + " to turn the weight into a balance",
+                     "give an analysis report with water, or import the ballasting file with its temperature");
+  }
+  if (!s.total_mass_kg) {
+    throw InputError("installed", "no recorded total weight to compare with the buoyancy (thesis eq. 5.2)",
+                     "give an analysis report with net_buoyancy_kg");
+  }
+  e.water.temperature_degC = *w->temperature_degC;
+  e.salinity_psu = w->salinity_psu.value_or(35.0);
+  e.depth_m = 0.0;  // the thesis computes the balance at the surface
+  e.water.pressure_dbar = 0.0;
+  e.water.density_kgm3 = seawater::density(e.salinity_psu, e.water.temperature_degC, 0.0);
+  e.net_buoyancy_kg = std::numeric_limits<double>::quiet_NaN();  // filled by the caller
+  return e;
+}
+
+PlannedWater plannedWater(const PlanOpts& o, const TrimEstimate& e, const Sources& s, std::string& source) {
+  PlannedWater w;
+  w.latitude_deg = parseNumber(o.latitude, "latitude", "the latitude in degrees");
+  const bool any = !o.temperature.empty() || !o.salinity.empty() || !o.depth.empty();
+  source = any ? "operator" : "last mission";
+  if (o.temperature.empty()) {
+    if (s.measured_at && temperatureIsStale(*s.measured_at, nowUtc())) {
+      throw InputError("temperature",
+                       "the last measured temperature (" + std::to_string(e.water.temperature_degC).substr(0, 6) +
+                           " degC, " + toIsoUtc(*s.measured_at) + ") is older than one month (thesis \u00a75.5.3)",
+                       "measure the water and give --temperature DEGC (and --salinity PSU)");
+    }
+    w.temperature_degC = e.water.temperature_degC;
+  } else {
+    w.temperature_degC = parseNumber(o.temperature, "temperature", "the next mission's water temperature in degC");
+  }
+  w.salinity_psu = o.salinity.empty() ? e.salinity_psu
+                                      : parseNumber(o.salinity, "salinity", "the next mission's practical salinity in PSU");
+  w.depth_m = o.depth.empty() ? e.depth_m : parseNumber(o.depth, "depth", "the next mission's operating depth in metres");
+  return w;
+}
+
+int runPlan(const PlanOpts& o) {
+  if (o.vehicle.empty()) throw InputError("vehicle", "missing", "give --vehicle ID (see 'auvballast vehicles')");
+  if (o.config.empty()) throw InputError("config", "missing", "give --config ID (thesis xx-xx-xx, e.g. 1-2-3)");
+  requireValidConfigurationId(o.config);
+  const VehicleProfile v = VehicleCatalog(vehiclesDir()).load(o.vehicle);
+  PreMissionInput in;
+  in.policy = planPolicyFromString(o.policy);
+  in.use_optional_pieces = o.optional_pieces;
+  in.sigma_factor = parseNumber(o.sigma_factor, "sigma-factor", "k of the safety margin k * sigma, e.g. 1.645");
+
+  // The history is needed for whatever the flags do not give, and to record the plan.
+  std::unique_ptr<HistoryStore> store;
+  std::optional<Configuration> config;
+  const bool need_history = o.installed.empty() || o.report.empty();
+  if (need_history || !o.no_save || o.accept) {
+    store = std::make_unique<HistoryStore>(historyPath(o.history));
+    config = store->configuration(o.config);
+    if (config && config->vehicle_key != v.id) {
+      throw InputError("vehicle", "configuration " + o.config + " is a " + config->vehicle_name + " in the history",
+                       "use --vehicle " + config->vehicle_key + " or another configuration ID");
+    }
+    if (!config && need_history) {
+      throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "'",
+                       "give --installed and --report, or record the configuration first (first-mission or "
+                       "'history --import-ballasting-file')");
+    }
+  }
+
+  Sources s;
+  if (!o.installed.empty()) {
+    s.installed_kg = parseNumberList(o.installed, v.points.size(), "installed",
+                                     "the kg of adjustment weight now at each point, in profile order");
+  } else {
+    s.installed_kg = installedFromHistory(*store, o.config, v, s);
+  }
+  if (!o.report.empty()) {
+    s.report = JsonReader::parseFile(o.report);
+    s.report_name = o.report;
+  } else {
+    const auto a = store->latestAnalysis(o.config, nowUtc());
+    if (!a) {
+      throw InputError("report", "the history has no analysis for configuration " + o.config,
+                       "give --report analysis.json (from 'auvballast analyze')");
+    }
+    s.report = a->result;
+    s.analysis_id = a->id;
+    s.measured_at = a->at;
+    s.report_name = "history analysis #" + std::to_string(a->id);
+  }
+
+  const bool physical = s.report.contains("net_buoyancy_kg") && s.report["net_buoyancy_kg"].is_number();
+  if (physical) {
+    in.estimate = trimEstimateFromReport(s.report, s.report_name);
+  } else if (in.policy == PlanPolicy::Classic) {
+    in.estimate = deviationsOnlyEstimate(store.get(), o.config, s);
+    if (auto w = store ? store->latestWater(o.config, nowUtc(), true) : std::nullopt) s.measured_at = w->measured_at;
+    const double displaced = in.estimate.water.density_kgm3 * v.hull.volumeAt(in.estimate.water.temperature_degC, 0.0);
+    in.estimate.net_buoyancy_kg = displaced - *s.total_mass_kg;
+    in.classic_computed_imbalance_kg = in.estimate.net_buoyancy_kg;
+  } else {
+    throw InputError("report.net_buoyancy_kg",
+                     s.report_name + " has no net buoyancy (e.g. deviations imported from a thesis ballasting file)",
+                     "use --policy classic, or run 'auvballast analyze' on the mission log and give --report");
+  }
+  if (physical && in.policy == PlanPolicy::Classic && s.total_mass_kg) {
+    // The thesis's own balance (eq. 5.2): recorded weight against rho V.
+    in.classic_computed_imbalance_kg =
+        in.estimate.water.density_kgm3 * v.hull.volumeAt(in.estimate.water.temperature_degC, in.estimate.water.pressure_dbar) -
+        *s.total_mass_kg;
+  }
+  in.installed_kg = s.installed_kg;
+
+  std::string source;
+  const PlannedWater operating = plannedWater(o, in.estimate, s, source);
+  const double deepest = o.max_depth.empty() ? 0.0 : parseNumber(o.max_depth, "max-depth", "the deepest planned depth in metres");
+  in.next = nextMissionWater(operating, deepest, source);
+  if (o.no_surface_check) {
+    std::erase_if(in.next.transit, [](const PlannedWater& w) { return w.depth_m == 0.0; });
+  }
+  const PreMissionPlan plan = planPreMission(v, in);
+  nlohmann::json j = toJson(plan);
+  j["config"] = o.config;
+  j["sources"] = {{"analysis", s.report_name}, {"installed", o.installed.empty() ? "history" : "flags"},
+                  {"water", source}};
+  if (o.no_surface_check) j["warnings"].push_back("surface check disabled (--no-surface-check)");
+
+  if (store && config && !o.no_save) {
+    Transaction tx(store->database());
+    Recommendation r;
+    r.at = nowUtc();
+    r.analysis_id = s.analysis_id;
+    r.policy = toString(in.policy);
+    r.recommendation = j;
+    r.accepted = o.accept;
+    const RecordId rid = store->addRecommendation(o.config, r);
+    if (o.accept) {
+      InstalledState st;
+      st.installed_at = r.at;
+      st.recommendation_id = rid;
+      double added = 0.0;
+      for (std::size_t i = 0; i < v.points.size(); ++i) {
+        // Whole 0.1 g like the pieces: 9.6 + 1.2 is 10.8 kg, not 10.799999999999999.
+        const double kg = std::round((s.installed_kg[i] + plan.points[i].add_kg) * 1e4) / 1e4;
+        st.points.push_back({v.points[i].name, kg, {}});
+        added += plan.points[i].add_kg;
+      }
+      if (s.total_mass_kg) st.total_mass_kg = std::round((*s.total_mass_kg + added) * 1e4) / 1e4;
+      st.note = "accepted pre-mission plan (" + r.policy + ")";
+      store->addInstalledState(o.config, st);
+    }
+    tx.commit();
+    j["history"] = {{"file", store->path()}, {"recommendation_id", rid}, {"accepted", o.accept}};
+  }
+  if (!o.json.empty()) writeJson(j, o.json);
+  if (o.json != "-") {
+    std::cout << toText(plan);
+    if (j.contains("history")) {
+      std::cout << "Recorded as recommendation #" << j["history"]["recommendation_id"].get<RecordId>() << " of "
+                << o.config << (o.accept ? " (accepted: installed state updated)" : "") << "\n";
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command addPlanCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("plan", "Pre-mission mode: last mission's estimate + installed pieces + next "
+                                         "mission's water -> which weights to add or remove where");
+  auto o = std::make_shared<PlanOpts>();
+  cmd->add_option("--vehicle", o->vehicle, "Vehicle id (see 'auvballast vehicles') or profile .json");
+  cmd->add_option("--config", o->config, "Configuration ID (thesis xx-xx-xx)");
+  cmd->add_option("--report", o->report, "Analysis report JSON ('auvballast analyze --json'); default: the history's latest");
+  cmd->add_option("--installed", o->installed, "Adjustment mass now at each point, kg, profile order (FS,FP,AS,AP); "
+                                               "default: the history's latest installed state");
+  cmd->add_option("--temperature", o->temperature, "Next mission's water temperature, degC (default: last mission's)");
+  cmd->add_option("--salinity", o->salinity, "Next mission's practical salinity, PSU (default: last mission's)");
+  cmd->add_option("--depth", o->depth, "Next mission's operating depth, m (default: last mission's)");
+  cmd->add_option("--max-depth", o->max_depth, "Deepest planned depth, m, if deeper than the operating depth");
+  cmd->add_option("--latitude", o->latitude, "Latitude for depth->pressure, deg")->capture_default_str();
+  cmd->add_option("--policy", o->policy, "exact | half (about half the change) | classic (the thesis's table)")
+      ->capture_default_str();
+  cmd->add_option("--sigma-factor", o->sigma_factor, "k in the safety margin k * sigma")->capture_default_str();
+  cmd->add_flag("--optional-pieces", o->optional_pieces, "Also use the kit's optional pieces (HUGIN: 0.5 kg)");
+  cmd->add_flag("--no-surface-check", o->no_surface_check,
+                "Do not require positive buoyancy at the surface (only at the planned depths)");
+  cmd->add_option("--history", o->history,
+                  "History database (default: $AUVBALLAST_HISTORY, else $XDG_DATA_HOME/auvballast/history.sqlite)");
+  cmd->add_flag("--no-save", o->no_save, "Do not record the recommendation in the history");
+  cmd->add_flag("--accept", o->accept, "Record the recommendation as accepted and installed");
+  cmd->add_option("--json", o->json, "Write the JSON report here ('-' = stdout instead of text)");
+  return {cmd, [o]() { return runPlan(*o); }};
+}
+
+}  // namespace auv::cli

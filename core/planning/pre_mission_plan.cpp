@@ -1,0 +1,284 @@
+#include "planning/pre_mission_plan.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "ballast/ballast_solver.h"
+#include "ballast/mass_quanta.h"
+#include "ballast/solution_text.h"
+#include "common/input_error.h"
+#include "common/units.h"
+#include "firstmission/hugin_first_mission.h"
+#include "planning/change_explanation.h"
+
+namespace auv {
+namespace {
+
+using ballast::toKg;
+using ballast::toQuanta;
+
+std::vector<double> usableSizes(const VehicleProfile& v, bool optional) {
+  std::vector<double> s = v.kit.pieces_kg;
+  if (optional) s.insert(s.end(), v.kit.optional_pieces_kg.begin(), v.kit.optional_pieces_kg.end());
+  std::sort(s.begin(), s.end());
+  s.erase(std::unique(s.begin(), s.end()), s.end());
+  return s;
+}
+
+std::string roleOf(const PlannedWater& w, const PlannedWater& operating) {
+  if (w.depth_m == 0.0) return "surface";
+  if (w.depth_m > operating.depth_m) return "deepest";
+  return "transit";
+}
+
+// Thesis order FS, FP, AS, AP as profile indices (two fore, two aft, each
+// pair one starboard and one port); InputError otherwise.
+std::array<std::size_t, 4> thesisCorners(const std::vector<AdjustmentPoint>& pts) {
+  const InputError bad("policy", "the classic table needs four points: two fore, two aft, each pair one starboard "
+                       "and one port", "use --policy exact or half for this vehicle");
+  if (pts.size() != 4) throw bad;
+  std::array<std::size_t, 4> idx{0, 1, 2, 3};
+  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return pts[a].position_m.x() > pts[b].position_m.x(); });
+  if (!(pts[idx[1]].position_m.x() > pts[idx[2]].position_m.x())) throw bad;
+  for (std::size_t k : {0u, 2u}) {
+    if (pts[idx[k]].position_m.y() < pts[idx[k + 1]].position_m.y()) std::swap(idx[k], idx[k + 1]);
+    if (!(pts[idx[k]].position_m.y() > pts[idx[k + 1]].position_m.y())) throw bad;
+  }
+  return idx;
+}
+
+// Pieces that take a point from `from_kg` to `to_kg`: add the difference
+// largest piece first, or take out installed pieces; if the installed pieces
+// cannot make the difference, swap to the fewest pieces for the new total.
+std::vector<int> moveToTotal(const std::vector<int>& have, const std::vector<double>& sizes, double from_kg,
+                             double to_kg, const std::string& point_name) {
+  std::vector<int> d(sizes.size(), 0);
+  std::int64_t rest = toQuanta(to_kg) - toQuanta(from_kg);
+  if (rest == 0) return d;
+  const bool add = rest > 0;
+  rest = std::abs(rest);
+  for (std::size_t s = sizes.size(); s-- > 0;) {
+    const std::int64_t q = toQuanta(sizes[s]);
+    std::int64_t n = rest / q;
+    if (!add) n = std::min<std::int64_t>(n, s < have.size() ? have[s] : 0);
+    d[s] = static_cast<int>(add ? n : -n);
+    rest -= n * q;
+  }
+  if (rest == 0) return d;
+  const std::vector<int> target = decomposeInstalled(to_kg, sizes, point_name);
+  for (std::size_t s = 0; s < sizes.size(); ++s) d[s] = target[s] - (s < have.size() ? have[s] : 0);
+  return d;
+}
+
+void fillPoints(const BallastProblem& pr, const std::vector<std::vector<int>>& delta, PreMissionPlan& out) {
+  out.points.clear();
+  for (std::size_t p = 0; p < pr.points.size(); ++p) {
+    PointRecommendation r;
+    r.name = pr.points[p].name;
+    r.label = pr.points[p].label;
+    for (std::size_t s = 0; s < pr.piece_sizes_kg.size(); ++s) {
+      r.add_kg += delta[p][s] * pr.piece_sizes_kg[s];
+      if (delta[p][s] != 0) r.pieces.push_back({pr.piece_sizes_kg[s], delta[p][s]});
+    }
+    r.add_kg = toKg(toQuanta(r.add_kg));
+    out.points.push_back(r);
+  }
+}
+
+// 1-sigma of the predicted attitude from the estimate's sigmas, each
+// propagated by central differences through the exact static trim.
+void attitudeSigmas(const BallastProblem& pr, const std::vector<std::vector<int>>& delta, const EstimatedVehicle& ev,
+                    const TrimEstimate& e, PreMissionPlan& out) {
+  auto with = [&](double dm, const Eigen::Vector3d& dr) {
+    BallastProblem q = pr;
+    q.vehicle.mass_kg = ev.mass.mass_kg + dm;
+    q.vehicle.cg_m = ev.mass.cg_m + dr;
+    q.vehicle.moment_kgm = q.vehicle.mass_kg * q.vehicle.cg_m;
+    return evaluateMove(q, delta);
+  };
+  double vp = 0.0, vr = 0.0;
+  auto add = [&](double dm, const Eigen::Vector3d& dr) {
+    if (dm == 0.0 && dr.isZero()) return;
+    const BallastSolution a = with(dm, dr), b = with(-dm, -dr);
+    vp += std::pow(0.5 * (a.pitch_deg - b.pitch_deg), 2);
+    vr += std::pow(0.5 * (a.roll_deg - b.roll_deg), 2);
+  };
+  add(ev.mass_sigma_kg, Eigen::Vector3d::Zero());
+  add(0.0, Eigen::Vector3d(e.cg_x_sigma_m, 0, 0));
+  add(0.0, Eigen::Vector3d(0, e.cg_y_sigma_m, 0));
+  out.pitch_sigma_deg = std::sqrt(vp);
+  out.roll_sigma_deg = std::sqrt(vr);
+}
+
+std::vector<std::vector<int>> classicMove(const VehicleProfile& v, const PreMissionInput& in, const BallastProblem& pr,
+                                          PreMissionPlan& out) {
+  const std::array<std::size_t, 4> at = thesisCorners(v.points);
+  const TrimEstimate& e = in.estimate;
+  if (!e.depth_error_m) throw InputError("errors.depth_m", "the classic table needs the depth deviation", "give an analysis report with errors");
+  if (!e.pitch_error_deg) throw InputError("errors.pitch_deg", "the classic table needs the pitch deviation", "give an analysis report with errors");
+  if (!e.roll_deg) throw InputError("errors.roll_deg", "the classic table needs the roll deviation", "give an analysis report with errors");
+  ClassicInput c;
+  for (std::size_t k = 0; k < 4; ++k) c.installed_kg[k] = in.installed_kg.empty() ? 0.0 : in.installed_kg[at[k]];
+  c.depth_error_m = *e.depth_error_m;
+  c.pitch_error_deg = *e.pitch_error_deg;
+  c.roll_deg = *e.roll_deg;
+  c.computed_imbalance_kg = in.classic_computed_imbalance_kg;
+  c.x_fore_m = v.points[at[0]].position_m.x();
+  c.x_aft_m = v.points[at[2]].position_m.x();
+  c.small_piece_kg = pr.piece_sizes_kg.front();
+  c.piece_sizes_kg = pr.piece_sizes_kg;
+  c.thresholds.depth_lo_m = 0.0;
+  c.thresholds.depth_hi_m = 0.1;
+  c.thresholds.pitch_deg = v.spec.pitch_tolerance_deg;
+  c.thresholds.roll_deg = v.spec.roll_tolerance_deg;
+  c.thresholds.weight_kg = v.spec.net_buoyancy_max_kg;
+  const ClassicResult r = classicAdjustment(c);
+  std::vector<std::vector<int>> delta(v.points.size(), std::vector<int>(pr.piece_sizes_kg.size(), 0));
+  for (std::size_t k = 0; k < 4; ++k) {
+    const std::size_t p = at[k];
+    const std::vector<int> have = pr.installed.empty() ? std::vector<int>{} : pr.installed[p];
+    delta[p] = moveToTotal(have, pr.piece_sizes_kg, c.installed_kg[k], r.mapped_kg[k], v.points[p].name);
+  }
+  out.details["classic"] = {{"weight_case", r.weight_case}, {"pitch_error_sign", r.pitch_sign},
+                            {"roll_error_sign", r.roll_sign}, {"blocked", r.blocked},
+                            {"deviations", {{"depth_m", c.depth_error_m}, {"pitch_deg", c.pitch_error_deg},
+                                            {"roll_deg", c.roll_deg}}}};
+  out.notes.push_back("Classic table (thesis App. E): " + r.weight_case + ", pitch error " + r.pitch_sign +
+                      ", roll error " + r.roll_sign + "; it moves one " + ballast::sizeText(c.small_piece_kg) +
+                      " piece per point and mission, whatever the size of the error.");
+  if (r.blocked) {
+    out.warnings.push_back("the classic table asks to remove a piece where none is installed, so it changes nothing");
+  }
+  if (in.use_optional_pieces) out.notes.push_back("The classic table uses the standard kit only.");
+  return delta;
+}
+
+}  // namespace
+
+const char* toString(PlanPolicy p) {
+  switch (p) {
+    case PlanPolicy::Exact: return "exact";
+    case PlanPolicy::HalfWay: return "half";
+    case PlanPolicy::Classic: return "classic";
+  }
+  return "exact";
+}
+
+PlanPolicy planPolicyFromString(const std::string& s) {
+  if (s == "exact") return PlanPolicy::Exact;
+  if (s == "half") return PlanPolicy::HalfWay;
+  if (s == "classic") return PlanPolicy::Classic;
+  throw InputError("policy", "unknown policy '" + s + "'", "use exact, half or classic");
+}
+
+PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in) {
+  if (v.points.empty()) {
+    throw InputError("vehicle", "profile '" + v.id + "' has no adjustment points", "add adjustment_points to the profile");
+  }
+  if (!in.installed_kg.empty() && in.installed_kg.size() != v.points.size()) {
+    throw InputError("installed", "expected " + std::to_string(v.points.size()) + " values, got " +
+                                      std::to_string(in.installed_kg.size()),
+                     "give one installed mass per adjustment point, in profile order");
+  }
+  if (!(in.sigma_factor >= 0.0) || !std::isfinite(in.sigma_factor)) {
+    throw InputError("sigma_factor", "must be a number >= 0", "use 1.645 for one-sided 95 %");
+  }
+  const HullModel hull = in.hull.value_or(v.hull);
+  PreMissionPlan out;
+  out.vehicle_id = v.id;
+  out.policy = in.policy;
+  out.estimate = in.estimate;
+  out.vehicle = estimatedVehicle(v, hull, in.estimate);
+  const bool standard_only = in.policy == PlanPolicy::Classic;
+  out.piece_sizes_kg = usableSizes(v, in.use_optional_pieces && !standard_only);
+
+  // Planned points: the band applies at the operating point, safety at all.
+  std::vector<PlannedWater> waters{in.next.operating};
+  waters.insert(waters.end(), in.next.transit.begin(), in.next.transit.end());
+  double sigma_water = 0.0, b_min = 0.0;
+  for (std::size_t i = 0; i < waters.size(); ++i) {
+    const ResolvedPoint rp = resolvePoint(hull, waters[i]);
+    PlannedPointResult r;
+    r.role = i == 0 ? "operating" : roleOf(waters[i], in.next.operating);
+    r.water = waters[i];
+    r.state = rp.state;
+    r.displaced_kg = rp.displaced_kg;
+    r.net_before_kg = rp.displaced_kg - out.vehicle.mass.mass_kg;
+    out.at_points.push_back(r);
+    sigma_water = std::max(sigma_water, displacedSigmaKg(hull, waters[i], in.next.temperature_sigma_degC,
+                                                         in.next.salinity_sigma_psu));
+    b_min = i == 0 ? rp.displaced_kg : std::min(b_min, rp.displaced_kg);
+  }
+  const double b_op = out.at_points.front().displaced_kg;
+  out.net_sigma_kg = std::hypot(in.estimate.net_buoyancy_sigma_kg, sigma_water);
+  out.margin_kg = in.sigma_factor * out.net_sigma_kg;
+  // The same margin off the top keeps the true value inside the spec band
+  // at both ends; where the two margins overlap, safety wins.
+  out.band_lo_kg = std::max(v.spec.net_buoyancy_min_kg, out.margin_kg + (b_op - b_min));
+  out.band_hi_kg = std::max(v.spec.net_buoyancy_max_kg - out.margin_kg, out.band_lo_kg);
+
+  BallastProblem pr;
+  pr.vehicle = out.vehicle.mass;
+  pr.displaced_mass_kg = b_op;
+  pr.cb_m = v.cb_m;
+  pr.points = v.points;
+  pr.piece_sizes_kg = out.piece_sizes_kg;
+  pr.spec = v.spec;
+  pr.spec.net_buoyancy_min_kg = out.band_lo_kg;
+  pr.spec.net_buoyancy_max_kg = out.band_hi_kg;
+  pr.policy = in.policy == PlanPolicy::HalfWay ? BallastPolicy::HalfWay : BallastPolicy::Exact;
+  for (std::size_t i = 0; i < in.installed_kg.size(); ++i) {
+    pr.installed.push_back(decomposeInstalled(in.installed_kg[i], pr.piece_sizes_kg, v.points[i].name));
+  }
+
+  const BallastSolution now = evaluateMove(pr, std::vector<std::vector<int>>(
+                                                   v.points.size(), std::vector<int>(pr.piece_sizes_kg.size(), 0)));
+  out.net_before_kg = now.net_buoyancy_kg;
+  out.pitch_before_deg = now.pitch_deg;
+  out.roll_before_deg = now.roll_deg;
+
+  BallastSolution sol;
+  if (in.policy == PlanPolicy::Classic) {
+    out.delta = classicMove(v, in, pr, out);
+    sol = evaluateMove(pr, out.delta);
+  } else {
+    // No kit total inside [lo, hi]: the solver would take the nearest, which
+    // may lie under the safety margin. Widen the band upward, one smallest
+    // piece at a time, until the answer is safe or nothing more is removable.
+    for (int widen = 0; widen <= 8; ++widen) {
+      sol = solveBallast(pr);
+      if (sol.net_buoyancy_kg >= out.band_lo_kg - 1e-6) break;
+      pr.spec.net_buoyancy_max_kg += pr.piece_sizes_kg.front();
+    }
+    out.band_hi_kg = pr.spec.net_buoyancy_max_kg;
+    out.delta = sol.delta;
+    out.notes = sol.notes;
+    out.warnings = sol.warnings;
+  }
+  fillPoints(pr, out.delta, out);
+  out.predicted.net_buoyancy_kg = sol.net_buoyancy_kg;
+  out.predicted.cg_offset_m = (sol.cg_m - v.cb_m).head<2>();
+  out.predicted.pitch_deg = sol.pitch_deg;
+  out.predicted.roll_deg = sol.roll_deg;
+  attitudeSigmas(pr, out.delta, out.vehicle, in.estimate, out);
+
+  // The spec's band, judged at the operating point (not the widened one).
+  const TrimSpec& spec = v.spec;
+  out.buoyancy_in_band = sol.net_buoyancy_kg >= std::max(0.0, spec.net_buoyancy_min_kg) - 1e-6 &&
+                         sol.net_buoyancy_kg <= spec.net_buoyancy_max_kg + 1e-6;
+  out.pitch_in_band = sol.pitch_in_band;
+  out.roll_in_band = sol.roll_in_band;
+
+  double added = 0.0;
+  for (const auto& p : out.points) added += p.add_kg;
+  out.safe = true;
+  for (auto& r : out.at_points) {
+    r.net_after_kg = r.displaced_kg - out.vehicle.mass.mass_kg - added;
+    if (r.net_after_kg < out.margin_kg - 1e-6) out.safe = false;
+  }
+  explainPlan(v, pr, out);
+  return out;
+}
+
+}  // namespace auv

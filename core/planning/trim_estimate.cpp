@@ -1,0 +1,71 @@
+#include "planning/trim_estimate.h"
+
+#include <cmath>
+
+#include "common/units.h"
+#include "seawater/seawater.h"
+#include "vehicle/json_reader.h"
+
+namespace auv {
+namespace {
+
+// A number, or nullopt for null/absent: the analysis writes null for what a
+// log cannot determine.
+std::optional<double> optionalNumber(const JsonReader& r, const std::string& key) {
+  if (!r.has(key) || r.node()[key].is_null()) return std::nullopt;
+  return r.number(key);
+}
+
+double requiredNumber(const JsonReader& r, const std::string& key, const std::string& why) {
+  if (!r.has(key) || r.node()[key].is_null()) {
+    r.fail(key, "missing or null: " + why, "run 'auvballast analyze' on a log with steady level flight, or give a report "
+                                           "that contains it");
+  }
+  return r.number(key);
+}
+
+}  // namespace
+
+TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::string& file) {
+  const JsonReader root(report, file);
+  TrimEstimate e;
+  e.net_buoyancy_kg = requiredNumber(root, "net_buoyancy_kg", "the planner needs the identified net buoyancy");
+  e.net_buoyancy_sigma_kg = requiredNumber(root, "net_buoyancy_sigma_kg", "the safety margin needs its uncertainty");
+  if (e.net_buoyancy_sigma_kg < 0.0) root.fail("net_buoyancy_sigma_kg", "must be >= 0", "write a 1-sigma value in kg");
+  if (root.has("cg_offset_mm")) {
+    const JsonReader cg = root.child("cg_offset_mm");
+    const std::optional<JsonReader> sg = root.optionalChild("cg_offset_sigma_mm");
+    if (auto x = optionalNumber(cg, "x")) {
+      e.cg_x_m = units::mmToM(*x);
+      if (sg) e.cg_x_sigma_m = units::mmToM(optionalNumber(*sg, "x").value_or(0.0));
+    }
+    if (auto y = optionalNumber(cg, "y")) {
+      e.cg_y_m = units::mmToM(*y);
+      if (sg) e.cg_y_sigma_m = units::mmToM(optionalNumber(*sg, "y").value_or(0.0));
+    }
+    if (e.cg_x_sigma_m < 0.0 || e.cg_y_sigma_m < 0.0) {
+      root.fail("cg_offset_sigma_mm", "sigmas must be >= 0", "write 1-sigma values in mm");
+    }
+  }
+  const JsonReader w = root.child("water");
+  e.water.temperature_degC = requiredNumber(w, "temperature_degC", "net buoyancy is only meaningful in its water");
+  e.salinity_psu = optionalNumber(w, "salinity_psu").value_or(35.0);
+  e.depth_m = optionalNumber(w, "depth_m").value_or(0.0);
+  if (e.depth_m < 0.0) e.depth_m = 0.0;  // a log mean just above the surface
+  e.water.pressure_dbar = optionalNumber(w, "pressure_dbar").value_or(seawater::pressureFromDepth(e.depth_m));
+  if (e.water.pressure_dbar < 0.0) e.water.pressure_dbar = 0.0;
+  e.water.density_kgm3 = optionalNumber(w, "density_kgm3")
+                             .value_or(seawater::density(e.salinity_psu, e.water.temperature_degC, e.water.pressure_dbar));
+  if (!(e.water.density_kgm3 > 900.0 && e.water.density_kgm3 < 1100.0)) {
+    w.fail("density_kgm3", "not a seawater density", "expected 900-1100 kg/m3 in situ");
+  }
+  if (root.has("errors") && root.node()["errors"].is_object()) {
+    const JsonReader er = root.child("errors");
+    e.depth_error_m = optionalNumber(er, "depth_m");
+    e.pitch_error_deg = optionalNumber(er, "pitch_deg");
+    e.roll_deg = optionalNumber(er, "roll_deg");
+  }
+  return e;
+}
+
+}  // namespace auv

@@ -1,0 +1,38 @@
+#pragma once
+// What a post-mission analysis found about the vehicle as it flew: net
+// buoyancy and CG offset with their 1-sigma uncertainties, and the water in
+// which they hold. The net buoyancy is only meaningful together with that
+// water (density, temperature, pressure): the planner turns it into a mass
+// with rho_log V(T_log, p_log) and never reuses the number in other water.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "hydrostatics/balance.h"
+
+namespace auv {
+
+struct TrimEstimate {
+  double net_buoyancy_kg = 0.0;        // B - W at `water`, positive = too light
+  double net_buoyancy_sigma_kg = 0.0;  // 1 sigma
+  std::optional<double> cg_x_m, cg_y_m;  // CG - CB, body axes; nullopt = not identified
+  double cg_x_sigma_m = 0.0, cg_y_sigma_m = 0.0;
+  WaterState water;                    // in situ where net buoyancy was identified
+  double salinity_psu = 35.0;
+  double depth_m = 0.0;
+  // The thesis's post-mission deviations (App. D signs), for the classic table:
+  // depth commanded - measured (+ = light), pitch measured - commanded (+ = nose
+  // up), roll (+ = starboard down).
+  std::optional<double> depth_error_m, pitch_error_deg, roll_deg;
+};
+
+// Reads the analysis report JSON (issue #3 contract: net_buoyancy_kg,
+// net_buoyancy_sigma_kg, cg_offset_mm {x, y}, cg_offset_sigma_mm, errors,
+// water {temperature_degC, salinity_psu, density_kgm3, pressure_dbar,
+// depth_m}). A null CG component is "not identified"; a null net buoyancy or
+// water throws InputError naming the field, since nothing can be planned
+// without them. Missing pressure is derived from depth, missing density
+// from T, S and pressure (EOS-80).
+TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::string& file);
+
+}  // namespace auv

@@ -1,0 +1,70 @@
+#pragma once
+// The closed loop with the simulator as truth and the real post-mission
+// analysis in between: HUGIN flies three level legs (160, 120, 140 rpm, as in
+// resources/examples/hugin1000_ballast_error.plan.json) with the installed
+// pieces and a ballast error, the log goes through core/analysis and its JSON
+// report, the plan's move is added to the installed pieces, and the next
+// mission is flown and judged. Truth after the move comes from the log's
+// metadata (what the simulator flew); the depth error from the analysis.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "closed_loop.h"
+#include "planning/pre_mission_plan.h"
+#include "sim/mission_plan.h"
+
+namespace auv::closed_loop {
+
+struct SimLoopCase {
+  double light_kg = 0.0, x_mm = 0.0, y_mm = 0.0;  // the ballast error (sim BallastError)
+  PlannedWater water1, water2;
+  std::vector<double> installed_kg;
+  std::uint64_t seed = 1;
+};
+
+// Same ranges as makeCases, installed 7.2, 7.2, 25.2, 25.2 kg (about neutral
+// as believed, like the example plan), operating depth 30-100 m.
+std::vector<SimLoopCase> makeSimCases(int count, std::uint64_t seed);
+
+struct SimMission {
+  double net_kg = 0.0;           // truth, mean over the logged samples
+  double pitch_deg = 0.0, roll_deg = 0.0;  // truth, static attitude in that water
+  double depth_error_m = 0.0, depth_error_ci95_m = 0.0;  // the analysis's, commanded - measured
+  nlohmann::json report;         // the analysis's JSON report
+  Truth truth;
+};
+
+struct SimOutcome {
+  SimMission before, after;
+  SpecCheck spec;
+  bool safe = false;
+  double best_roll_deg = 0.0;
+  bool reachable = false;  // the perfect-knowledge plan meets the pitch band
+};
+
+// Sigmas the plan uses instead of the analysis's own (nullopt = the
+// analysis's): to separate the planner from the analysis's calibration.
+struct SigmaOverride {
+  std::optional<double> net_kg, x_mm, y_mm;
+};
+
+class SimHarness {
+ public:
+  explicit SimHarness(SigmaOverride sigma = {});
+  SimMission fly(const SimLoopCase& c, const std::vector<double>& installed_kg, const PlannedWater& w,
+                 std::uint64_t seed) const;
+  SimOutcome runOnce(const SimLoopCase& c, PlanPolicy policy, bool optional_pieces) const;
+  std::optional<int> classicMissions(const SimLoopCase& c, int max_missions) const;
+  const VehicleProfile& vehicle() const { return profile_; }
+
+ private:
+  SpecCheck judge(const SimMission& m, double best_roll_deg) const;
+  VehicleProfile profile_;  // with the simulator's hydrodynamics as sections, for the analysis
+  sim::SimVehicle sim_;
+  sim::MissionPlan plan_;   // legs, noise and trace rate of the example plan
+  Harness analytic_;
+  SigmaOverride sigma_;
+};
+
+}  // namespace auv::closed_loop
