@@ -1,11 +1,16 @@
 #pragma once
 // Renders a widget to <build>/screenshots/<name>.png and returns the image,
-// so tests can assert on pixels and people can look at the result.
+// so tests can assert on pixels and people can look at the result;
+// `shot` also compares it with the committed golden (golden.h).
+#include <gtest/gtest.h>
+
 #include <QApplication>
 #include <QDir>
 #include <QImage>
 #include <QPixmap>
 #include <QWidget>
+
+#include "golden.h"
 
 namespace auv::testing {
 
@@ -15,6 +20,13 @@ inline QImage screenshot(QWidget& w, const QString& name) {
   const QImage img = w.grab().toImage();
   QDir().mkpath(AUV_SCREENSHOT_DIR);
   img.save(QString(AUV_SCREENSHOT_DIR) + "/" + name + ".png");
+  return img;
+}
+
+inline QImage shot(QWidget& w, const QString& name, GoldenTolerance tol = {}) {
+  const QImage img = screenshot(w, name);
+  const QString problem = checkGolden(img, name, tol);
+  EXPECT_TRUE(problem.isEmpty()) << problem.toStdString();
   return img;
 }
 

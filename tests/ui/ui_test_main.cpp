@@ -1,10 +1,17 @@
 // GoogleTest main for widget tests: the platform must be chosen before the
 // QApplication exists, and gtest_discover_tests runs this binary at build time.
+// Everything that could differ between machines or runs is pinned here so
+// that screenshots can be compared with committed goldens: the style, the
+// font (DejaVu Sans), no cursor blinking, and private settings/data folders.
 #include <gtest/gtest.h>
 
 #include <QApplication>
 #include <QDir>
 #include <QFont>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStyleFactory>
+#include <QTemporaryDir>
 #include <cstdlib>
 
 int main(int argc, char** argv) {
@@ -16,7 +23,16 @@ int main(int argc, char** argv) {
     setenv("XDG_RUNTIME_DIR", dir.toLocal8Bit().constData(), 1);
   }
   QApplication app(argc, argv);
+  QApplication::setOrganizationName("auvballast-test");
+  QApplication::setApplicationName("auvballast-test");
+  QStandardPaths::setTestModeEnabled(true);
+  // Settings of this process only (geometry, last folder): never the user's.
+  QTemporaryDir settings_dir(QDir::tempPath() + "/auvballast-ui-test-XXXXXX");
+  QSettings::setDefaultFormat(QSettings::IniFormat);
+  QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settings_dir.path());
+  QApplication::setStyle(QStyleFactory::create("Fusion"));
   QApplication::setFont(QFont("DejaVu Sans", 10));
+  QApplication::setCursorFlashTime(0);  // a blinking cursor would make screenshots random
   ::testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }

@@ -125,6 +125,8 @@ void CraneWeighingPage::updateSumCheck() {
 
 bool CraneWeighingPage::isComplete() const { return sum_ok_; }
 
+void CraneWeighingPage::cleanupPage() { store(); }
+
 void CraneWeighingPage::store() {
   auto& w = state_.crane.weighing;
   for (std::size_t i = 0; i < 4; ++i) w.scales_kg[i] = scales_[i]->value();

@@ -16,6 +16,8 @@ class CraneWeighingPage : public QWizardPage {
  public:
   explicit CraneWeighingPage(WizardState& state);
   void initializePage() override;
+  // Back keeps what was typed (stored, not validated): nothing is lost going back and forth.
+  void cleanupPage() override;
   bool validatePage() override;
   bool isComplete() const override;
   int nextId() const override;

@@ -2,6 +2,7 @@
 
 #include <QHeaderView>
 #include <QLabel>
+#include <QScrollArea>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
@@ -9,24 +10,39 @@
 #include "common/input_error.h"
 #include "common/units.h"
 #include "firstmission/hugin_first_mission.h"
+#include "firstmission/slocum_first_mission.h"
+#include "history/store.h"
+#include "widgets/inputs.h"
 #include "widgets/weight_map_widget.h"
+#include "wizard/history_save.h"
+#include "wizard/operator_wizard.h"
 
 namespace auv::ui {
 namespace {
 
-QString piecesText(const PointRecommendation& p) {
+QString piecesText(const PointRecommendation& p, bool grams) {
   QStringList parts;
   for (const auto& pc : p.pieces) {
     if (pc.count == 0) continue;
-    parts << QString("%1 %2 × %3 kg")
-                 .arg(pc.count > 0 ? QObject::tr("add") : QObject::tr("remove"))
+    parts << QObject::tr("%1 %2 × %3")
+                 .arg(pc.count > 0 ? FirstMissionResultPage::tr("add") : FirstMissionResultPage::tr("remove"))
                  .arg(std::abs(pc.count))
-                 .arg(pc.size_kg, 0, 'f', 1);
+                 .arg(massText(pc.size_kg, grams));
   }
-  return parts.isEmpty() ? QObject::tr("no change") : parts.join(", ");
+  return parts.isEmpty() ? FirstMissionResultPage::tr("no change") : parts.join(", ");
 }
 
 QString band(bool ok) { return ok ? QString("✓") : QString("✗"); }
+
+// Installed mass per profile point as the report saw it: the crane input,
+// or for a glider what core lists as "ballast now" (after the tank step if set).
+std::vector<double> installedPerPoint(const WizardState& s, const FirstMissionReport& r) {
+  if (r.method != "tank") return s.crane.installed_kg;
+  std::vector<double> out;
+  const auto& now = r.details.contains("ballast_now_g") ? r.details["ballast_now_g"] : nlohmann::json::object();
+  for (const auto& p : s.vehicle->points) out.push_back(now.value(p.name, 0.0) / 1000.0);
+  return out;
+}
 
 }  // namespace
 
@@ -41,26 +57,42 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   messages_ = new QLabel;
   messages_->setObjectName("messages");
   messages_->setWordWrap(true);
+  messages_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  messages_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(messages_);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setMinimumHeight(90);
+  save_status_ = makeErrorLabel("save_status");
   table_ = new QTableWidget(0, 3);
   table_->setObjectName("changes");
   table_->setHorizontalHeaderLabels({tr("Point"), tr("Change"), tr("Pieces")});
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->verticalHeader()->hide();
+  table_->verticalHeader()->setDefaultSectionSize(26);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   map_ = new WeightMapWidget;
   auto* lay = new QVBoxLayout(this);
   lay->addWidget(before_);
-  lay->addWidget(table_, 1);
-  lay->addWidget(map_, 2);
+  lay->addWidget(table_);
+  // The map and the notes share the height: for a glider the notes carry
+  // the battery, rail and disk steps, which must not scroll out of sight.
+  lay->addWidget(map_, 3);
   lay->addWidget(predicted_);
-  lay->addWidget(messages_);
+  lay->addWidget(scroll, 2);
+  lay->addWidget(save_status_);
 }
 
 void FirstMissionResultPage::initializePage() {
   state_.report.reset();
   state_.last_error.clear();
+  save_status_->clear();
+  const bool tank = state_.isGlider();
+  setTitle(tank ? tr("Ballast change after the tank weighing") : tr("Ballast change before the first mission"));
   try {
-    state_.report = craneFirstMission(*state_.vehicle, state_.crane);
+    if (!state_.vehicle) throw InputError("vehicle", "no vehicle chosen", "go back to the vehicle page");
+    state_.report = tank ? slocumFirstMission(*state_.vehicle, state_.tank) : craneFirstMission(*state_.vehicle, state_.crane);
     showReport(*state_.report);
   } catch (const InputError& e) {
     state_.last_error = e.what();
@@ -70,47 +102,73 @@ void FirstMissionResultPage::initializePage() {
 }
 
 void FirstMissionResultPage::showReport(const FirstMissionReport& r) {
+  const bool g = state_.isGlider();
   const Eigen::Vector3d d = r.cg_m - r.cb_m;
   before_->setStyleSheet(QString());
-  before_->setText(tr("Weighed %1 kg; buoyancy %2 kg in %3 kg/m³ water → net buoyancy %4 kg (%5). "
+  const QString net = g ? tr("%1 g").arg(r.net_buoyancy_kg * 1000.0, 0, 'f', 1)
+                        : tr("%1 kg").arg(r.net_buoyancy_kg, 0, 'f', 2);
+  const QString state = std::abs(r.net_buoyancy_kg) < 5e-4 ? tr("neutral")
+                        : r.net_buoyancy_kg > 0            ? tr("too light")
+                                                           : tr("too heavy");
+  before_->setText(tr("Weighed %1 kg; buoyancy %2 kg in %3 kg/m³ water → net buoyancy %4 (%5). "
                       "CG − CB: x %6 mm, y %7 mm; static pitch %8°, roll %9°.")
-                       .arg(r.weight_kg, 0, 'f', 1)
-                       .arg(r.buoyancy_kg, 0, 'f', 1)
+                       .arg(r.weight_kg, 0, 'f', g ? 3 : 1)
+                       .arg(r.buoyancy_kg, 0, 'f', g ? 3 : 1)
                        .arg(r.density_kgm3, 0, 'f', 2)
-                       .arg(r.net_buoyancy_kg, 0, 'f', 2)
-                       .arg(r.net_buoyancy_kg >= 0 ? tr("too light") : tr("too heavy"))
-                       .arg(units::mToMm(d.x()), 0, 'f', 1)
-                       .arg(units::mToMm(d.y()), 0, 'f', 1)
-                       .arg(r.pitch_before_deg, 0, 'f', 2)
-                       .arg(r.roll_before_deg, 0, 'f', 2));
+                       .arg(net)
+                       .arg(state)
+                       .arg(fixed(units::mToMm(d.x()), 1))
+                       .arg(fixed(units::mToMm(d.y()), 1))
+                       .arg(fixed(r.pitch_before_deg, 2))
+                       .arg(fixed(r.roll_before_deg, 2)));
   table_->setRowCount(static_cast<int>(r.points.size()));
   for (int i = 0; i < static_cast<int>(r.points.size()); ++i) {
     const auto& p = r.points[static_cast<std::size_t>(i)];
     table_->setItem(i, 0, new QTableWidgetItem(QString::fromStdString(p.label)));
-    table_->setItem(i, 1, new QTableWidgetItem(QString("%1%2 kg").arg(p.add_kg >= 0 ? "+" : "").arg(p.add_kg, 0, 'f', 1)));
-    table_->setItem(i, 2, new QTableWidgetItem(piecesText(p)));
+    table_->setItem(i, 1, new QTableWidgetItem(massText(p.add_kg, g, true)));
+    table_->setItem(i, 2, new QTableWidgetItem(piecesText(p, g)));
   }
   table_->resizeColumnsToContents();
-  map_->setModel(makeWeightMapModel(*state_.vehicle, state_.crane.installed_kg, r));
+  // Every point visible without scrolling (6 for a glider, 4 for HUGIN).
+  table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
+                         table_->verticalHeader()->defaultSectionSize() * table_->rowCount() + 2 * table_->frameWidth());
+  map_->setModel(makeWeightMapModel(*state_.vehicle, installedPerPoint(state_, r), r));
   const auto& spec = state_.vehicle->spec;
   const bool nb_ok = r.predicted.net_buoyancy_kg >= spec.net_buoyancy_min_kg - 1e-9 &&
                      r.predicted.net_buoyancy_kg <= spec.net_buoyancy_max_kg + 1e-9;
-  predicted_->setText(tr("After the change: net buoyancy %1 kg %2 (band %3..%4), pitch %5° %6 (±%7), "
+  predicted_->setText(tr("After the change: net buoyancy %1 %2 (band %3..%4), pitch %5° %6 (±%7), "
                          "roll %8° %9 (±%10).")
-                          .arg(r.predicted.net_buoyancy_kg, 0, 'f', 2)
+                          .arg(g ? tr("%1 g").arg(r.predicted.net_buoyancy_kg * 1000.0, 0, 'f', 1)
+                                 : tr("%1 kg").arg(r.predicted.net_buoyancy_kg, 0, 'f', 2))
                           .arg(band(nb_ok))
-                          .arg(spec.net_buoyancy_min_kg, 0, 'f', 1)
-                          .arg(spec.net_buoyancy_max_kg, 0, 'f', 1)
-                          .arg(r.predicted.pitch_deg, 0, 'f', 2)
+                          .arg(g ? spec.net_buoyancy_min_kg * 1000.0 : spec.net_buoyancy_min_kg, 0, 'f', g ? 0 : 1)
+                          .arg(g ? tr("%1 g").arg(spec.net_buoyancy_max_kg * 1000.0, 0, 'f', 0)
+                                 : tr("%1 kg").arg(spec.net_buoyancy_max_kg, 0, 'f', 1))
+                          .arg(fixed(r.predicted.pitch_deg, 2))
                           .arg(band(std::abs(r.predicted.pitch_deg) <= spec.pitch_tolerance_deg))
                           .arg(spec.pitch_tolerance_deg, 0, 'f', 1)
-                          .arg(r.predicted.roll_deg, 0, 'f', 2)
+                          .arg(fixed(r.predicted.roll_deg, 2))
                           .arg(band(std::abs(r.predicted.roll_deg) <= spec.roll_tolerance_deg))
                           .arg(spec.roll_tolerance_deg, 0, 'f', 1));
   QStringList msgs;
   for (const auto& w : r.warnings) msgs << tr("⚠ %1").arg(QString::fromStdString(w));
   for (const auto& n : r.notes) msgs << QString::fromStdString(n);
   messages_->setText(msgs.join("\n"));
+}
+
+bool FirstMissionResultPage::validatePage() {
+  // Finish: the session goes into the history as one transaction.
+  auto* wiz = qobject_cast<OperatorWizard*>(wizard());
+  if (!state_.report) return false;
+  HistoryStore* store = wiz ? wiz->history() : nullptr;
+  if (!store) return true;  // the start page said the history is unavailable
+  try {
+    saveFirstMissionToHistory(*store, state_, wiz->now());
+  } catch (const InputError& e) {
+    save_status_->setText(tr("Not saved: %1").arg(QString::fromStdString(e.what())));
+    return false;
+  }
+  return true;
 }
 
 }  // namespace auv::ui

@@ -10,14 +10,17 @@ namespace auv::ui {
 
 class WeightMapWidget;
 
-// Shows the core's first-mission report: the balance before, what to change
-// at each point (table and top-down map) and the predicted result against
-// the spec bands.
+// Shows the core's first-mission report, whichever weighing produced it
+// (crane for an AUV, tank for a glider: the report format is the same): the
+// balance before, what to change at each point (table and top-down map) and
+// the predicted result against the spec bands. Finish saves the session to
+// the history in one transaction.
 class FirstMissionResultPage : public QWizardPage {
   Q_OBJECT
  public:
   explicit FirstMissionResultPage(WizardState& state);
   void initializePage() override;
+  bool validatePage() override;
   int nextId() const override { return -1; }
 
  private:
@@ -26,6 +29,7 @@ class FirstMissionResultPage : public QWizardPage {
   QLabel* before_;
   QLabel* predicted_;
   QLabel* messages_;
+  QLabel* save_status_;
   QTableWidget* table_;
   WeightMapWidget* map_;
 };

@@ -29,11 +29,11 @@ struct WaterType {
   double salinity_psu;  // middle of the thesis Table 2.1 range
 };
 constexpr WaterType kWaterTypes[] = {
-    {QT_TRANSLATE_NOOP("WaterPage", "Fresh water (about 0.5)"), 0.5},
-    {QT_TRANSLATE_NOOP("WaterPage", "Brackish, mildly (1-5)"), 3.0},
-    {QT_TRANSLATE_NOOP("WaterPage", "Brackish, moderately (5-15)"), 10.0},
-    {QT_TRANSLATE_NOOP("WaterPage", "Brackish, heavily (15-30)"), 22.5},
-    {QT_TRANSLATE_NOOP("WaterPage", "Sea water (about 35)"), 35.0},
+    {QT_TRANSLATE_NOOP("auv::ui::WaterPage", "Fresh water (about 0.5)"), 0.5},
+    {QT_TRANSLATE_NOOP("auv::ui::WaterPage", "Brackish, mildly (1-5)"), 3.0},
+    {QT_TRANSLATE_NOOP("auv::ui::WaterPage", "Brackish, moderately (5-15)"), 10.0},
+    {QT_TRANSLATE_NOOP("auv::ui::WaterPage", "Brackish, heavily (15-30)"), 22.5},
+    {QT_TRANSLATE_NOOP("auv::ui::WaterPage", "Sea water (about 35)"), 35.0},
 };
 
 }  // namespace
@@ -48,6 +48,7 @@ WaterPage::WaterPage(WizardState& state) : state_(state) {
   water_type_->addItem(tr("Measured salinity"), -1.0);
   for (const auto& t : kWaterTypes) water_type_->addItem(tr(t.name), t.salinity_psu);
   water_type_->setToolTip(tr("Pick a water type if you have no salinity measurement (thesis Table 2.1)."));
+  water_type_->setMinimumHeight(32);
   salinity_ = spin("salinity", 0, 42, 2, " PSU", tr("Practical salinity of the mission water."));
   depth_ = spin("depth", 0, 6000, 1, " m", tr("Depth where the vehicle spends most of the mission."));
   latitude_ = spin("latitude", -90, 90, 1, " °", tr("Latitude of the area (gravity for depth to pressure)."));
@@ -95,6 +96,10 @@ void WaterPage::updateDensity() {
     density_->clear();
     error_->setText(QString::fromStdString(e.what()));
   }
+}
+
+void WaterPage::cleanupPage() {
+  state_.crane.water = {temperature_->value(), salinity_->value(), depth_->value(), latitude_->value()};
 }
 
 bool WaterPage::validatePage() {

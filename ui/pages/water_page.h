@@ -16,6 +16,8 @@ class WaterPage : public QWizardPage {
  public:
   explicit WaterPage(WizardState& state);
   void initializePage() override;
+  // Back keeps what was typed (stored, not validated): nothing is lost going back and forth.
+  void cleanupPage() override;
   bool validatePage() override;
   int nextId() const override;
 

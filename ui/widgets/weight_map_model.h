@@ -10,6 +10,14 @@
 
 namespace auv::ui {
 
+// One square on the map: a single kit piece, or (for many small pieces such
+// as 162 × 1 g of lead shot) one square for all of them, labelled with the count.
+struct MapBlock {
+  double mass_kg = 0.0;
+  int pieces = 1;
+  bool add = true;
+};
+
 struct MapPoint {
   std::string name;
   std::string label;
@@ -18,6 +26,10 @@ struct MapPoint {
   double installed_kg = 0.0;
   std::vector<PieceCount> change;  // signed counts per size
   double change_kg = 0.0;
+
+  // Pieces drawn one by one up to this many per size, else as one block.
+  static constexpr int kMaxSeparatePieces = 6;
+  std::vector<MapBlock> blocks() const;
 };
 
 struct WeightMapModel {
@@ -25,12 +37,17 @@ struct WeightMapModel {
   double diameter_m = 0.0;
   double cb_x_m = 0.0;
   double cb_y_m = 0.0;
+  bool grams = false;             // glider ballast is set to the gram
+  double px_per_sqrt_kg = 7.0;    // square side = this * sqrt(mass): area ∝ mass
   std::vector<MapPoint> points;
 
   int piecesToAdd() const;
   int piecesToRemove() const;
 };
 
+// `installed_kg` in profile point order. The square scale is 7 px/sqrt(kg)
+// (a 4.8 kg HUGIN piece ~15 px) unless the largest square would be under
+// 10 px, as for a glider's grams of lead; then the largest is drawn 24 px.
 WeightMapModel makeWeightMapModel(const VehicleProfile& vehicle, const std::vector<double>& installed_kg,
                                   const FirstMissionReport& report);
 

@@ -4,12 +4,15 @@
 #include <QPainterPath>
 #include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include "widgets/inputs.h"
 
 namespace auv::ui {
 
 WeightMapWidget::WeightMapWidget(QWidget* parent) : QWidget(parent) {
   setObjectName("weight_map");
-  setMinimumSize(600, 260);
+  setMinimumSize(600, 200);
   setToolTip(tr("Top view, bow to the right. Green: add, red: remove, grey: installed now."));
 }
 
@@ -54,32 +57,61 @@ void WeightMapWidget::paintEvent(QPaintEvent*) {
   p.drawLine(cb + QPointF(0, -8), cb + QPointF(0, 8));
   p.drawText(cb + QPointF(6, -6), tr("CB"));
 
-  const double unit = 7.0;  // px per sqrt(kg): a 4.8 kg piece ~15 px
-  for (const auto& pt : model_.points) {
-    const QPointF at = toScreen(pt.x_m, pt.y_m, syp);
-    p.setPen(QPen(Qt::black, 1));
-    p.setBrush(QColor(150, 150, 150));
-    const double r_inst = 6 + (pt.installed_kg > 0 ? std::sqrt(pt.installed_kg) * 2 : 0);
-    p.drawEllipse(at, r_inst, r_inst);
-    // Pieces to add/remove in a row beside the point, away from the centreline.
-    double x = at.x() + r_inst + 4;
-    const double yrow = at.y() + (pt.y_m >= 0 ? 4 : -4 - unit * std::sqrt(4.8));
-    for (const auto& ch : pt.change) {
-      const double side = unit * std::sqrt(ch.size_kg);
-      const QColor col = ch.count > 0 ? QColor(46, 160, 67) : QColor(210, 50, 50);
-      for (int k = 0; k < std::abs(ch.count); ++k) {
-        p.setBrush(col);
-        p.drawRect(QRectF(x, yrow, side, side));
-        x += side + 3;
+  const double unit = model_.px_per_sqrt_kg;
+  // Height reserved for a row of squares: the largest square, at least 15 px.
+  double row_h = 15.0;
+  for (const auto& pt : model_.points)
+    for (const auto& b : pt.blocks()) row_h = std::max(row_h, unit * std::sqrt(b.mass_kg));
+  // Points at the same x and y in this top view (e.g. a glider's upper and
+  // lower aft bottles) are spread apart on screen so each stays readable.
+  std::vector<QPointF> at(model_.points.size());
+  for (std::size_t i = 0; i < model_.points.size(); ++i) {
+    const auto& pt = model_.points[i];
+    at[i] = toScreen(pt.x_m, pt.y_m, syp);
+    int before = 0, same = 0;
+    for (std::size_t j = 0; j < model_.points.size(); ++j) {
+      const auto& o = model_.points[j];
+      if (std::abs(o.x_m - pt.x_m) < 1e-3 && std::abs(o.y_m - pt.y_m) < 1e-3) {
+        ++same;
+        if (j < i) ++before;
       }
     }
-    const QString text = QString("%1: %2%3 kg")
-                             .arg(QString::fromStdString(pt.label))
-                             .arg(pt.change_kg >= 0 ? "+" : "")
-                             .arg(pt.change_kg, 0, 'f', 1);
+    at[i].ry() += (before - (same - 1) / 2.0) * 0.9 * half_w;
+  }
+  QFont small = font();
+  small.setPointSizeF(font().pointSizeF() * 0.85);
+  for (std::size_t i = 0; i < model_.points.size(); ++i) {
+    const auto& pt = model_.points[i];
+    const bool below = at[i].y() >= c.y();  // labels away from the centreline
+    p.setPen(QPen(Qt::black, 1));
+    p.setBrush(QColor(150, 150, 150));
+    const double installed = model_.grams ? pt.installed_kg * 30.0 : pt.installed_kg;  // grams read like kg
+    const double r_inst = 6 + (installed > 0 ? std::min(std::sqrt(installed) * 2, 14.0) : 0);
+    p.drawEllipse(at[i], r_inst, r_inst);
+    // Pieces to add/remove in a row beside the point.
+    double x = at[i].x() + r_inst + 4;
+    const double yrow = at[i].y() + (below ? 4 : -4 - row_h);
+    for (const auto& b : pt.blocks()) {
+      const double side = std::max(5.0, unit * std::sqrt(b.mass_kg));
+      const QColor col = b.add ? QColor(46, 160, 67) : QColor(210, 50, 50);
+      p.setPen(QPen(Qt::black, 1));
+      p.setBrush(col);
+      const QRectF sq(x, below ? yrow : yrow + row_h - side, side, side);
+      p.drawRect(sq);
+      x += side + 3;
+      if (b.pieces > 1) {
+        p.setPen(palette().text().color());
+        p.setFont(small);
+        const QString n = QString("×%1").arg(b.pieces);
+        p.drawText(QPointF(x, sq.bottom() - 2), n);
+        x += QFontMetricsF(small).horizontalAdvance(n) + 4;
+        p.setFont(font());
+      }
+    }
+    const QString text = QString("%1: %2").arg(QString::fromStdString(pt.label), massText(pt.change_kg, model_.grams, true));
     p.setPen(palette().text().color());
-    const double ty = pt.y_m >= 0 ? at.y() + unit * std::sqrt(4.8) + 22 : at.y() - unit * std::sqrt(4.8) - 10;
-    p.drawText(QPointF(at.x() - 40, ty), text);
+    const double ty = below ? at[i].y() + row_h + 22 : at[i].y() - row_h - 10;
+    p.drawText(QPointF(at[i].x() - 40, ty), text);
   }
 }
 

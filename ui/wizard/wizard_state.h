@@ -1,24 +1,55 @@
 #pragma once
 // Everything the operator has entered so far and the last computed report.
 // Pages read and write this one object, so going back and forth loses nothing
-// and the whole session can later be saved and resumed.
+// and the whole session can be autosaved and resumed (session_json.h).
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "firstmission/first_mission_report.h"
 #include "firstmission/hugin_first_mission.h"
+#include "missionlog/mission_log.h"
+#include "missionlog/read_report.h"
 #include "vehicle/vehicle_profile.h"
+#include "weighing/tank_weighing.h"
 
 namespace auv::ui {
 
+// The thesis sequence: weigh before the first mission, analyse a recorded
+// mission afterwards, plan the next one. Pre-mission planning needs the
+// analysis pages, which are not in the wizard yet.
+enum class SessionMode { kFirstMission, kPostMission };
+
 struct WizardState {
+  std::string resource_dir;
   std::string vehicles_dir;
   std::optional<VehicleProfile> vehicle;
+
+  // The configuration (thesis §5.5.1) being ballasted.
   std::string configuration_id;
   std::string payload_note;
-  CraneFirstMissionInput crane;  // weighing, installed, water, policy
+  std::string area;
+  std::string water_type;
+  bool configuration_in_history = false;  // picked on the start page, not new
+
+  SessionMode mode = SessionMode::kFirstMission;
+
+  // First mission, crane method (HUGIN class): weighing, installed, water, policy.
+  CraneFirstMissionInput crane;
+  // First mission, Slocum tank method: readings, ballast, roll test.
+  TankWeighing tank;
+  bool tank_water_salt = false;  // the fresh/salt choice; sets the density range
+
+  // Post mission: the imported log and what the reader said about it.
+  std::string log_file;
+  std::shared_ptr<const MissionLog> log;
+  std::optional<ReadReport> log_report;
+  std::string log_format;
+
   std::optional<FirstMissionReport> report;
   std::string last_error;
+
+  bool isGlider() const { return vehicle && vehicle->kind == "glider"; }
 };
 
 }  // namespace auv::ui

@@ -1,0 +1,52 @@
+#pragma once
+// The input widgets every page uses, built the same way: an object name for
+// tests, the unit as a suffix, a tooltip saying what to measure and how, and
+// a 32 px minimum height for gloved hands on a dockside laptop.
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QString>
+#include <cmath>
+
+namespace auv::ui {
+
+inline QDoubleSpinBox* makeSpin(const QString& name, double lo, double hi, int decimals, const QString& suffix,
+                                const QString& tip) {
+  auto* s = new QDoubleSpinBox;
+  s->setObjectName(name);
+  s->setRange(lo, hi);
+  s->setDecimals(decimals);
+  s->setSuffix(suffix);
+  s->setToolTip(tip);
+  s->setMinimumHeight(32);
+  s->setKeyboardTracking(true);
+  return s;
+}
+
+// A red label next to the fields for the message of an InputError.
+inline QLabel* makeErrorLabel(const QString& name = QStringLiteral("error")) {
+  auto* l = new QLabel;
+  l->setObjectName(name);
+  l->setWordWrap(true);
+  l->setStyleSheet("color: #b00020;");
+  return l;
+}
+
+// Glider ballast is set to the gram, AUV kit pieces are kilograms: show
+// each in the unit the technician works in.
+inline QString massText(double kg, bool grams, bool sign = false) {
+  // Round first so that -0.4 g reads "0 g", not "-0 g".
+  const double shown = grams ? std::round(kg * 1000.0) : std::round(kg * 10.0) / 10.0;
+  const double v = shown == 0.0 ? 0.0 : shown;
+  const QString plus = sign && v > 0 ? QStringLiteral("+") : QString();
+  if (grams) return QStringLiteral("%1%2 g").arg(plus).arg(v, 0, 'f', 0);
+  return QStringLiteral("%1%2 kg").arg(plus).arg(v, 0, 'f', 1);
+}
+
+// A number with fixed decimals that never shows "-0.00".
+inline QString fixed(double v, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  if (std::round(v * scale) == 0.0) v = 0.0;
+  return QString::number(v, 'f', decimals);
+}
+
+}  // namespace auv::ui

@@ -1,0 +1,17 @@
+#pragma once
+// Where the GUI keeps its files. Each can be overridden by an environment
+// variable, which the tests use to work in a temporary directory:
+//   AUVBALLAST_HISTORY   the SQLite history (default <AppDataLocation>/history.sqlite)
+//   AUVBALLAST_AUTOSAVE  the unfinished session (default <AppDataLocation>/session.json)
+//   AUVBALLAST_DOCS      the folder holding user-guide.md
+#include <QString>
+
+namespace auv::ui {
+
+QString historyFilePath();
+QString autosaveFilePath();
+// docs/user-guide.md: $AUVBALLAST_DOCS, the installed share/doc/auvballast,
+// else the source tree's docs/.
+QString userGuidePath();
+
+}  // namespace auv::ui

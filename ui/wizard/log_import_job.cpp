@@ -1,0 +1,95 @@
+#include "wizard/log_import_job.h"
+
+#include <QElapsedTimer>
+#include <QtConcurrent/QtConcurrent>
+
+#include "common/input_error.h"
+#include "missionlog/log_reader.h"
+#include "missionlog/read_options.h"
+
+namespace auv::ui {
+
+LogImportJob::LogImportJob(QObject* parent) : QObject(parent) {
+  // The worker only stores its progress; the UI thread polls it. A signal per
+  // callback would flood the event queue on a fast read.
+  poll_timer_.setInterval(30);
+  connect(&poll_timer_, &QTimer::timeout, this, [this] { poll(); });
+  connect(&watcher_, &QFutureWatcher<LogImportOutcome>::finished, this, [this] {
+    poll_timer_.stop();
+    poll();
+    emit finished(watcher_.result());
+  });
+}
+
+LogImportJob::~LogImportJob() {
+  cancel();
+  waitForFinished();
+}
+
+bool LogImportJob::running() const { return watcher_.isRunning(); }
+
+void LogImportJob::cancel() {
+  if (cancel_) cancel_->store(true);
+}
+
+void LogImportJob::waitForFinished() { watcher_.waitForFinished(); }
+
+void LogImportJob::poll() {
+  if (!permille_) return;
+  const int percent = permille_->load() / 10;
+  if (percent != last_percent_) {
+    last_percent_ = percent;
+    emit progress(percent);
+  }
+}
+
+void LogImportJob::start(const QString& path) {
+  if (running()) return;
+  cancel_ = std::make_shared<std::atomic<bool>>(false);
+  permille_ = std::make_shared<std::atomic<int>>(0);
+  last_percent_ = -1;
+  const std::string file = path.toStdString();
+  const std::size_t block = block_bytes_;
+  auto cancel = cancel_;
+  auto permille = permille_;
+  watcher_.setFuture(QtConcurrent::run([file, block, cancel, permille]() {
+    LogImportOutcome out;
+    QElapsedTimer clock;
+    clock.start();
+    try {
+      const LogReaderRegistry registry = LogReaderRegistry::withBuiltinReaders();
+      const LogReader* reader = registry.find(file);
+      if (!reader) {
+        std::string known;
+        for (const auto& n : registry.formatNames()) known += (known.empty() ? "" : ", ") + n;
+        throw InputError("mission log", "format not recognised", "convert it to one of: " + known,
+                         {file, 0, 0});
+      }
+      out.format = reader->formatName();
+      ReadOptions options;
+      options.block_bytes = block;
+      options.progress = [cancel, permille](double fraction) {
+        permille->store(static_cast<int>(fraction * 1000.0));
+        return !cancel->load();
+      };
+      auto log = std::make_shared<MissionLog>(reader->read(file, options, out.report));
+      out.log = std::move(log);
+      out.status = LogImportOutcome::Status::kOk;
+    } catch (const ReadCancelled&) {
+      out.status = LogImportOutcome::Status::kCancelled;
+      out.report = ReadReport{};
+    } catch (const InputError& e) {
+      out.status = LogImportOutcome::Status::kFailed;
+      out.error = e.what();
+    } catch (const std::exception& e) {
+      out.status = LogImportOutcome::Status::kFailed;
+      out.error = e.what();
+    }
+    out.seconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
+    return out;
+  }));
+  poll_timer_.start();
+  emit progress(0);
+}
+
+}  // namespace auv::ui

@@ -1,0 +1,56 @@
+#pragma once
+// Reads a mission log in a worker thread so the UI never freezes: the
+// registry picks the reader by content, the reader reports progress, and
+// cancel() makes the next progress callback return false, which the reader
+// turns into ReadCancelled (nothing partial is kept).
+#include <QFutureWatcher>
+#include <QObject>
+#include <QTimer>
+#include <atomic>
+#include <memory>
+#include <string>
+
+#include "missionlog/mission_log.h"
+#include "missionlog/read_report.h"
+
+namespace auv::ui {
+
+struct LogImportOutcome {
+  enum class Status { kOk, kCancelled, kFailed } status = Status::kFailed;
+  std::shared_ptr<const MissionLog> log;
+  ReadReport report;
+  std::string format;
+  std::string error;  // InputError text when failed
+  double seconds = 0.0;
+};
+
+class LogImportJob : public QObject {
+  Q_OBJECT
+ public:
+  explicit LogImportJob(QObject* parent = nullptr);
+  ~LogImportJob() override;
+
+  // Starts reading `path`; ignored while a read is running.
+  void start(const QString& path);
+  void cancel();
+  bool running() const;
+  // Smaller blocks = more frequent progress (tests; the reader's default is 4 MiB).
+  void setBlockBytes(std::size_t bytes) { block_bytes_ = bytes; }
+  // Waits for the worker (tests and shutdown).
+  void waitForFinished();
+
+ signals:
+  void progress(int percent);
+  void finished(const auv::ui::LogImportOutcome& outcome);
+
+ private:
+  void poll();
+  QFutureWatcher<LogImportOutcome> watcher_;
+  QTimer poll_timer_;
+  std::shared_ptr<std::atomic<bool>> cancel_;
+  std::shared_ptr<std::atomic<int>> permille_;
+  std::size_t block_bytes_ = std::size_t{1} << 20;
+  int last_percent_ = -1;
+};
+
+}  // namespace auv::ui
