@@ -1,0 +1,127 @@
+// auvballast model-check: a mission log and a vehicle -> the post-mission
+// analysis plus the model check (core/discrepancy): where the recording and
+// the model disagree, which physics the model lacks, fitted and proven on
+// held-out simulation error; --accept writes the accepted terms into a copy
+// of the vehicle profile. This file only maps flags; every number comes from core.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "analysis/analysis_report.h"
+#include "analysis/mission_analysis.h"
+#include "cli_context.h"
+#include "commands.h"
+#include "common/input_error.h"
+#include "common/units.h"
+#include "discrepancy/model_check_report.h"
+#include "discrepancy/profile_update.h"
+#include "discrepancy/vehicle_check.h"
+#include "missionlog/log_reader.h"
+#include "number_list.h"
+#include "resource_paths.h"
+#include "vehicle/json_reader.h"
+#include "vehicle/vehicle_catalog.h"
+
+namespace auv::cli {
+namespace {
+
+struct ModelCheckOpts {
+  std::string vehicle, log, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth;
+  bool accept = false;
+};
+
+int runModelCheck(const ModelCheckOpts& o) {
+  if (o.vehicle.empty()) throw InputError("vehicle", "missing", "give --vehicle ID (see 'auvballast vehicles') or a profile .json");
+  if (o.log.empty()) throw InputError("log", "missing", "give --log FILE (a mission log, e.g. the interchange CSV)");
+  const VehicleProfile v = VehicleCatalog(vehiclesDir()).load(o.vehicle);
+  const std::string logName = std::filesystem::path(o.log).filename().string();
+
+  analysis::AnalysisOptions a;
+  a.log_name = logName;
+  discrepancy::CheckSetup setup;
+  if (!o.installed.empty()) {
+    a.installed_kg = parseNumberList(o.installed, v.points.size(), "installed",
+                                     "the kg of adjustment weight at each point during the mission, in profile order");
+    setup.auv.installed_kg = a.installed_kg;
+  }
+  if (!o.cg_y_sigma_mm.empty()) {
+    const double s = parseNumber(o.cg_y_sigma_mm, "cg-y-sigma-mm", "the CG y uncertainty of a roll test, in mm");
+    if (!(s > 0.0)) throw InputError("cg-y-sigma-mm", "must be positive", "e.g. --cg-y-sigma-mm 0.2");
+    setup.auv.cg_y_sigma_m = units::mmToM(s);
+  }
+  if (!o.min_depth.empty()) {
+    const double z = parseNumber(o.min_depth, "min-depth", "the shallowest depth (m) a glider sample may come from");
+    if (!(z >= 0.0)) throw InputError("min-depth", "must not be negative", "e.g. --min-depth 50");
+    setup.glider.min_depth_m = z;
+  }
+  discrepancy::ModelCheckOptions mo;
+  if (!o.terms.empty()) {
+    std::string t = o.terms;
+    for (std::size_t p = 0; p <= t.size();) {
+      const std::size_t q = std::min(t.find(',', p), t.size());
+      const std::string id = t.substr(p, q - p);
+      if (!discrepancy::findTerm(id))
+        throw InputError("terms", "'" + id + "' is not a model-check term",
+                         "use ids such as hull_compressibility, thermal_expansion, mass_drift, pitch_sensor_bias");
+      mo.only_terms.push_back(id);
+      p = q + 1;
+    }
+  }
+
+  ReadReport readReport;
+  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.log, ReadOptions{}, readReport);
+  const analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
+  nlohmann::json j = analysis::toJson(r);
+  const std::unique_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(log, v, app::resourceDir(), setup);
+  const discrepancy::ModelCheckResult mc = discrepancy::runModelCheck(*model, mo);
+  discrepancy::mergeIntoAnalysisJson(j, mc);
+  if (!readReport.clean()) j["model_check"]["import"] = readReport.summary();
+
+  if (o.accept) {
+    const std::string out = o.out_profile.empty() ? v.id + ".model-check.json" : o.out_profile;
+    if (mc.missing_physics.empty()) {
+      j["model_check"]["profile_written"] = nullptr;
+    } else {
+      const nlohmann::json doc = JsonReader::parseFile(v.file);
+      writeJson(discrepancy::profileWithAcceptedTerms(doc, v, mc, logName), out);
+      j["model_check"]["profile_written"] = out;
+    }
+  }
+  if (!o.json.empty()) writeJson(j, o.json);
+  if (o.json != "-") {
+    if (!readReport.clean()) std::cout << readReport.summary() << "\n";
+    std::cout << analysis::toText(r) << "\n" << discrepancy::toText(mc);
+    if (o.accept) {
+      if (mc.missing_physics.empty())
+        std::cout << "Nothing accepted: no profile written.\n";
+      else
+        std::cout << "Accepted terms written to " << j["model_check"]["profile_written"].get<std::string>()
+                  << " (use it as --vehicle to fly and analyse with them).\n";
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command addModelCheckCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "model-check",
+      "Mission log -> analysis plus the model check: where the model and the recording differ, the physics it lacks, "
+      "fitted and proven on held-out simulation error");
+  auto o = std::make_shared<ModelCheckOpts>();
+  cmd->add_option("--vehicle", o->vehicle, "Vehicle id (see 'auvballast vehicles') or profile .json")->required();
+  cmd->add_option("--log", o->log, "Mission log (interchange CSV, docs/formats/mission-log-csv.md)")->required();
+  cmd->add_option("--json", o->json, "Write the JSON report (analysis + missing_physics) here ('-' = stdout instead of text)");
+  cmd->add_flag("--accept", o->accept, "Write the accepted terms into a copy of the vehicle profile");
+  cmd->add_option("--out-profile", o->out_profile, "Where --accept writes the profile copy (default <id>.model-check.json)");
+  cmd->add_option("--installed", o->installed,
+                  "AUV: adjustment mass at each point during the logged mission, kg, profile order");
+  cmd->add_option("--cg-y-sigma-mm", o->cg_y_sigma_mm,
+                  "AUV: CG y is known from a roll test to this sigma (mm); lets a roll-sensor bias be told from CG y");
+  cmd->add_option("--terms", o->terms, "Only try these library terms (comma-separated ids)");
+  cmd->add_option("--min-depth", o->min_depth, "Gliders: use samples deeper than this, m (default 10)");
+  return {cmd, [o]() { return runModelCheck(*o); }};
+}
+
+}  // namespace auv::cli

@@ -1,0 +1,412 @@
+#include "discrepancy/auv_check_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "analysis/mission_analysis.h"
+#include "analysis/segments.h"
+#include "analysis/series_tools.h"
+#include "common/input_error.h"
+#include "common/units.h"
+#include "discrepancy/log_features.h"
+#include "discrepancy/savitzky_golay.h"
+#include "seawater/seawater.h"
+#include "sim/actuator_forces.h"
+#include "sim/dynamics.h"
+#include "sim/flown_mass.h"
+#include "sim/water_from_log.h"
+
+namespace auv::discrepancy {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRhoRef = 1025.0;
+
+void require(const MissionLog& log, const char* name, const char* why) {
+  if (!hasChannel(log, name, 10))
+    throw InputError(name, std::string("the log has no ") + name + " channel, needed " + why,
+                     "a model check of an AUV needs depth, pitch, roll, speed, prop_rpm and elevator");
+}
+
+}  // namespace
+
+AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, const sim::VehicleModel& model,
+                             const sim::DepthAutopilotConfig& autopilot, const AuvCheckOptions& o)
+    : model_(model), autopilot_(autopilot), opt_(o) {
+  require(log, "depth", "for the depth rate");
+  require(log, "pitch", "for the attitude");
+  require(log, "roll", "for the roll balance");
+  require(log, "speed", "for the hydrodynamic loads");
+  require(log, "prop_rpm", "for the propeller");
+  require(log, "elevator", "for the stern-plane loads");
+  if (!hasChannel(log, "depth_cmd", 2) && !hasChannel(log, "pitch_cmd", 2))
+    notes_.push_back("no depth_cmd or pitch_cmd: the simulation replays the logged elevator open loop");
+  latitude_ = analysis::latitudeFromMetadata(log).value_or(seawater::kDefaultLatitude_deg);
+  log_.metadata = log.metadata;
+  log_.time = log.time;
+  for (const char* name : {"depth", "pitch", "roll", "heading", "speed", "prop_rpm", "elevator", "thruster_front_rpm",
+                           "thruster_aft_rpm", "depth_cmd", "pitch_cmd"})
+    if (const LogChannel* c = log.find(name)) log_.channels.push_back(*c);
+  baseline_ = acceptedTermsFromProfile(v.sections, v.file);
+  if (!o.installed_kg.empty()) installed_ = sim::installedWeights(v, o.installed_kg);
+
+  // Uniform grid.
+  const TimeSeries pitchS = log.series("pitch");
+  double dt = o.row_interval_s > 0 ? o.row_interval_s : std::max(0.2, analysis::medianInterval(pitchS.t));
+  const double span = log.time.back() - log.time.front();
+  dt = std::max(dt, span / static_cast<double>(std::max<std::size_t>(100, o.max_rows)));
+  dt_ = dt;
+  std::vector<double> grid;
+  for (double t = log.time.front(); t <= log.time.back() + 1e-9; t += dt) grid.push_back(t);
+  gridT_ = grid;
+  const std::size_t G = grid.size();
+  const double gap = std::max(5.0, 5.0 * dt);
+  const int half = std::max(2, static_cast<int>(std::lround(o.state_half_window_s / dt)));
+  k_ = std::max(1, static_cast<int>(std::lround(o.integral_half_window_s / dt)));
+  auto smooth = [&](const char* name, double scale) {
+    std::vector<double> y = channelAt(log, name, grid, false, gap);
+    for (double& x : y) x *= scale;
+    return savitzkyGolay(y, dt, half, o.state_fit_order);
+  };
+  // Propeller and thruster forces go with n |n|: smooth that, not n, so the
+  // mean force over the window is kept.
+  auto smoothSquare = [&](const char* name) {
+    std::vector<double> y = channelAt(log, name, grid, false, gap);
+    for (double& x : y) x *= std::abs(x);
+    Smoothed r = savitzkyGolay(y, dt, half, o.state_fit_order);
+    for (double& x : r.value) x = std::copysign(std::sqrt(std::abs(x)), x);
+    return r;
+  };
+  const double deg = units::degToRad(1.0);
+  const Smoothed u = smooth("speed", 1.0), th = smooth("pitch", deg), ph = smooth("roll", deg);
+  const Smoothed rpm = smoothSquare("prop_rpm"), el = smooth("elevator", deg);
+  const bool thr = model_.thruster_count > 0;
+  const Smoothed tf = thr && hasChannel(log, "thruster_front_rpm") ? smoothSquare("thruster_front_rpm") : Smoothed{};
+  const Smoothed ta = thr && hasChannel(log, "thruster_aft_rpm") ? smoothSquare("thruster_aft_rpm") : Smoothed{};
+  if (thr && (tf.value.empty() || ta.value.empty()))
+    notes_.push_back("no tunnel-thruster channels: thrusters taken as off in the equation error");
+  const std::vector<double> zRaw = channelAt(log, "depth", grid, false, gap);
+  const std::vector<double> pRaw = channelAt(log, "pitch", grid, false, gap);
+  const std::vector<double> rRaw = channelAt(log, "roll", grid, false, gap);
+  const std::vector<double> uRaw = channelAt(log, "speed", grid, false, gap);
+  // w cos(theta) cos(phi) = z_dot + u sin(theta) = d/dt [z + integral of u
+  // sin(theta)]: fitting that sum as one signal keeps the depth rate and the
+  // speed along the pitched axis on the same fit.
+  Smoothed X;
+  {
+    std::vector<double> x(G, kNaN);
+    double acc = 0.0;
+    bool open = false;
+    for (std::size_t i = 0; i < G; ++i) {
+      const double f = uRaw[i] * std::sin(units::degToRad(pRaw[i]));
+      if (!std::isfinite(f) || !std::isfinite(zRaw[i])) {
+        open = false;
+        continue;
+      }
+      if (open) acc += 0.5 * dt * (f + uRaw[i - 1] * std::sin(units::degToRad(pRaw[i - 1])));
+      open = true;
+      x[i] = zRaw[i] + acc;
+    }
+    X = savitzkyGolay(x, dt, half, o.state_fit_order);
+  }
+  const std::vector<double> T = channelAt(log, "temperature", grid, false, gap);
+  const std::vector<double> S = channelAt(log, "salinity", grid, false, gap);
+  const std::vector<double> rhoC = channelAt(log, "density", grid, false, gap);
+  const std::vector<double> pC = channelAt(log, "pressure", grid, false, gap);
+  const std::vector<double> heading = channelAt(log, "heading", grid, false, gap);
+  has_depth_ref_ = !pC.empty();
+
+  grid_.resize(G);
+  for (std::size_t i = 0; i < G; ++i) {
+    GridState& g = grid_[i];
+    g.u = u.value[i];
+    g.A = X.d1[i];
+    g.th = th.value[i];
+    g.thdot = th.d1[i];
+    g.ph = ph.value[i];
+    g.phdot = ph.d1[i];
+    g.rpm = rpm.value[i];
+    g.elev_rad = el.value[i];
+    g.th_front = tf.value.empty() ? 0.0 : tf.value[i];
+    g.th_aft = ta.value.empty() ? 0.0 : ta.value[i];
+    g.T = T.empty() || std::isnan(T[i]) ? v.hull.reference_temperature_degC : T[i];
+    g.p = !pC.empty() && std::isfinite(pC[i]) ? pC[i]
+                                               : seawater::pressureFromDepth(std::clamp(zRaw[i], 0.0, 10600.0), latitude_);
+    g.rho = !rhoC.empty() && std::isfinite(rhoC[i]) ? rhoC[i] : kNaN;
+    if (std::isnan(g.rho) && !T.empty() && !S.empty() && std::isfinite(T[i]) && std::isfinite(S[i])) {
+      try {
+        g.rho = seawater::density(S[i], T[i], std::max(0.0, g.p));
+      } catch (const InputError&) {
+      }
+    }
+    if (std::isnan(g.rho)) g.rho = kRhoRef;
+    g.valid = true;
+    for (double x : {g.u, g.A, g.th, g.thdot, g.ph, g.phdot, g.rpm, g.elev_rad, g.th_front, g.th_aft, g.p})
+      g.valid = g.valid && std::isfinite(x);
+  }
+
+  analysis::SegmentOptions so;
+  const analysis::Segmentation seg = analysis::detectSegments(log, so);
+  const std::vector<double> since = sinceLastChange(log, {{"depth_cmd", 0.2}, {"prop_rpm", 10.0}, {"pitch_cmd", 2.0}}, grid);
+
+  std::size_t phaseIdx = 0;
+  int leg = -1;
+  double lastCmd = kNaN;
+  const std::vector<double> depthCmd = channelAt(log, "depth_cmd", grid, true, 1e9);
+  const auto K = static_cast<std::size_t>(k_);
+  for (std::size_t i = K; i + K < G; ++i) {
+    bool ok = std::isfinite(zRaw[i]) && std::isfinite(pRaw[i]) && std::isfinite(rRaw[i]) && std::isfinite(uRaw[i]) &&
+              zRaw[i] >= o.min_depth_m;
+    for (std::size_t j = i - K; ok && j <= i + K; ++j) ok = grid_[j].valid;
+    if (!ok) continue;
+    // Legs: a depth command change starts a new unit of cross-validation.
+    if (!depthCmd.empty() && std::isfinite(depthCmd[i]) && !(std::abs(depthCmd[i] - lastCmd) < 0.2)) {
+      lastCmd = depthCmd[i];
+      ++leg;
+    }
+    if (depthCmd.empty()) leg = static_cast<int>((grid[i] - grid.front()) / 600.0);  // 10-minute pieces
+    rowGrid_.push_back(i);
+    depthSensor_.push_back(zRaw[i]);
+    zRef_.push_back(has_depth_ref_ && std::isfinite(pC[i])
+                        ? seawater::depthFromPressure(std::clamp(pC[i], 0.0, 11000.0), latitude_)
+                        : kNaN);
+    table_.t.push_back(grid[i]);
+    table_.block.push_back(std::max(leg, 0));
+    table_.unit.push_back(std::max(leg, 0));
+    while (phaseIdx + 1 < seg.phases.size() && seg.phases[phaseIdx].end_s < grid[i]) ++phaseIdx;
+    Phase phase = Phase::kLevel;
+    if (!seg.phases.empty()) {
+      switch (seg.phases[phaseIdx].kind) {
+        case analysis::SegmentKind::kSurface: phase = Phase::kSurface; break;
+        case analysis::SegmentKind::kDive: phase = Phase::kDive; break;
+        case analysis::SegmentKind::kClimb: phase = Phase::kClimb; break;
+        default: phase = Phase::kLevel;
+      }
+    }
+    if (!heading.empty() && std::isfinite(heading[i - 1]) && std::isfinite(heading[i + 1])) {
+      double d = heading[i + 1] - heading[i - 1];
+      d -= 360.0 * std::round(d / 360.0);
+      if (std::abs(d / (2 * dt)) > 1.0) phase = Phase::kTurn;
+    }
+    const GridState& g = grid_[i];
+    table_.phase.push_back(phase);
+    table_.pressure_dbar.push_back(g.p);
+    table_.temperature_degC.push_back(T.empty() ? kNaN : g.T);
+    table_.speed_mps.push_back(g.u);
+    table_.rpm.push_back(g.rpm);
+    table_.pitch_deg.push_back(units::radToDeg(g.th));
+    table_.since_actuator_s.push_back(since[i]);
+    obs_depth_.push_back(zRaw[i]);
+    obs_pitch_.push_back(units::degToRad(pRaw[i]));
+    obs_roll_.push_back(units::degToRad(rRaw[i]));
+    obs_speed_.push_back(uRaw[i]);
+    obs_vv_.push_back(-(g.A - g.u * std::sin(g.th)));
+  }
+  if (rowGrid_.size() < 50)
+    throw InputError("depth", "fewer than 50 usable samples below " + std::to_string(o.min_depth_m) + " m",
+                     "a model check needs a submerged record of several minutes");
+  // Renumber units densely; merge units too short to matter (< 30 rows) into the previous one.
+  {
+    int next = -1, last = -1;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < table_.unit.size(); ++i) {
+      if (table_.unit[i] != last) {
+        if (next < 0 || count >= 30) {
+          ++next;
+          count = 0;
+        }
+        last = table_.unit[i];
+      }
+      table_.unit[i] = next;
+      table_.block[i] = next;
+      ++count;
+    }
+  }
+  t_ref_ = 0.5 * (table_.t.front() + table_.t.back());
+  double sr = 0, sT = 0, sp = 0;
+  for (std::size_t g : rowGrid_) {
+    sr += grid_[g].rho;
+    sT += grid_[g].T;
+    sp += grid_[g].p;
+  }
+  const double n = static_cast<double>(rowGrid_.size());
+  ref_rho_ = sr / n;
+  ref_T_ = sT / n;
+  ref_p_ = sp / n;
+  eq_ = {Channel::kVerticalForce, Channel::kPitchMoment, Channel::kRollMoment};
+  if (has_depth_ref_) eq_.push_back(Channel::kDepth);
+  if (hasChannel(log, "temperature", 10) && hasChannel(log, "salinity", 10)) {
+    water_ = sim::waterColumnFromLog(log, 1.0, latitude_);
+  } else {
+    water_ = sim::WaterColumn::uniform(ref_rho_, ref_T_);
+    notes_.push_back("the log has no temperature and salinity: the replay flies in uniform water of the mean density");
+  }
+}
+
+TermValues AuvCheckModel::total(const Params& p) const {
+  TermValues t = baseline_;
+  for (std::size_t k = 0; k < kTermCount; ++k) t[k] += p.terms[k];
+  return t;
+}
+
+sim::VehicleLoading AuvCheckModel::loading(const Params& p) const {
+  sim::VehicleLoading l;
+  l.extra_masses = installed_;
+  l.error.net_buoyancy_kg = p.nuisance[0];
+  l.error.cg_shift_m = Eigen::Vector3d(p.nuisance[1], p.nuisance[2], 0.0);
+  return l;
+}
+
+Eigen::VectorXd AuvCheckModel::nuisanceStart() const { return Eigen::Vector3d::Zero(); }
+Eigen::VectorXd AuvCheckModel::nuisanceScale() const { return Eigen::Vector3d(0.01, 1e-4, 1e-4); }
+Eigen::VectorXd AuvCheckModel::nuisanceLower() const { return Eigen::Vector3d(-0.05 * model_.body.mass_kg, -0.1, -0.1); }
+Eigen::VectorXd AuvCheckModel::nuisanceUpper() const { return Eigen::Vector3d(0.05 * model_.body.mass_kg, 0.1, 0.1); }
+
+std::vector<NuisancePrior> AuvCheckModel::priors() const {
+  if (!opt_.cg_y_sigma_m) return {};
+  return {{2, 0.0, *opt_.cg_y_sigma_m}};
+}
+
+bool AuvCheckModel::applicable(std::size_t term) const {
+  const PhysicsTerm& t = termLibrary()[term];
+  if (!(t.families & kAuvFamily)) return false;
+  if (t.id == "depth_sensor_offset") return has_depth_ref_;
+  if (t.id == "quadratic_pitch_damping") return model_.hydro.Mqq_kgm2 != 0.0;
+  if (t.id == "propeller_torque") return model_.prop.diameter_m > 0.0;
+  return true;
+}
+
+void AuvCheckModel::equationError(const Params& prm, std::span<const std::uint32_t> rows, double* out) const {
+  const TermValues tv = total(prm);
+  const sim::VehicleLoading L = loading(prm);
+  const sim::FlownMass fm = sim::flownMass(model_, L.extra_masses, std::nullopt, L.error, 0.0);
+  sim::Dynamics dyn(model_);
+  dyn.setMassProperties(fm.mass_kg, fm.r_g_m, fm.extra_Ixx, fm.extra_Iyy);
+  const Eigen::Vector4d M = dyn.massDiagonal();
+  const std::size_t C = eq_.size();
+  const sim::Propeller& prop = model_.prop;
+  const HullModel& hull = model_.body.hull;
+  const std::size_t G = grid_.size();
+  const auto K = static_cast<std::size_t>(k_);
+  // Grid points the requested rows need.
+  std::vector<char> need(G, 0);
+  for (std::uint32_t r : rows)
+    for (std::size_t j = rowGrid_[r] - K; j <= rowGrid_[r] + K; ++j) need[j] = 1;
+  // Velocities (heave, pitch, roll) and model forces at each needed point.
+  std::vector<double> vel(3 * G, 0.0), force(3 * G, 0.0), depthOffset(G, 0.0);
+  for (std::size_t j = 0; j < G; ++j) {
+    if (!need[j]) continue;
+    const GridState& g = grid_[j];
+    const double n = std::max(0.0, g.rpm) / 60.0;
+    double kt = 1.0;
+    if (g.u > 0.0 && n > 1e-9 && prop.KT0 > 0.0) {
+      const double J = g.u * (1.0 - prop.wake_fraction) / (n * prop.diameter_m);
+      kt = 1.0 - (prop.c2 == 1.0 ? J / prop.c1 : std::pow(J / prop.c1, prop.c2));
+    }
+    const double q0 = g.thdot / std::cos(g.ph);
+    TermInputs in;
+    in.hours_from_reference = (gridT_[j] - t_ref_) / 3600.0;
+    in.pressure_dbar = g.p;
+    in.temperature_degC = g.T;
+    in.reference_temperature_degC = hull.reference_temperature_degC;
+    in.prop_torque_basis = g.rpm * g.rpm * (g.rho / kRhoRef) * kt;
+    in.pitch_damping_basis = model_.hydro.Mqq_kgm2 * std::abs(q0) * q0;
+    Effects e;
+    applyEffects(tv, in, e);
+    depthOffset[j] = e.depth_offset_m;
+
+    const double th = g.th - e.pitch_bias_rad, ph = g.ph - e.roll_bias_rad;
+    const double sth = std::sin(th), cth = std::cos(th), sph = std::sin(ph), cph = std::cos(ph);
+    // z_dot through the water + u sin(true theta).
+    const double A = g.A + e.vertical_current_mps + g.u * (sth - std::sin(g.th));
+    const double w = A / (cth * cph);
+    const double q = g.thdot / cph;
+    const double p = g.phdot - q * sph * sth / cth;
+
+    sim::StepInputs si;
+    si.water_density_kgm3 = g.rho;
+    si.weight_n = (fm.mass_kg + e.extra_mass_kg) * units::g0;
+    si.buoyancy_n = g.rho * units::g0 * hull.volumeAt(g.T, g.p) * e.volume_factor;
+    si.actuators.prop_rps = n;
+    si.actuators.plane_rad = -g.elev_rad;  // log sign -> paper sign
+    si.actuators.thruster_rpm[0] = g.th_front;
+    si.actuators.thruster_rpm[1] = g.th_aft;
+    si.external = sim::Force4(0.0, 0.0, e.pitch_moment_nm, e.roll_moment_nm);
+    dyn.setStepInputs(si);
+    sim::StateVector s;
+    s << g.u, w, q, p, 0.0, 0.0, th, ph;
+    const sim::StateVector d = dyn.derivative(s);
+    vel[3 * j] = w;
+    vel[3 * j + 1] = q;
+    vel[3 * j + 2] = p;
+    force[3 * j] = M[1] * d[sim::kW];
+    force[3 * j + 1] = M[2] * d[sim::kQ];
+    force[3 * j + 2] = M[3] * d[sim::kP];
+  }
+  const double span = 2.0 * static_cast<double>(K) * dt_;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const std::size_t i = rows[r];
+    const std::size_t g = rowGrid_[i];
+    double* o = out + r * C;
+    for (std::size_t c = 0; c < 3; ++c) {
+      // Momentum change over the window against the impulse of the model's force.
+      double impulse = 0.0;
+      for (std::size_t j = g - K; j < g + K; ++j) impulse += 0.5 * (force[3 * j + c] + force[3 * (j + 1) + c]) * dt_;
+      o[c] = (M[static_cast<Eigen::Index>(c) + 1] * (vel[3 * (g + K) + c] - vel[3 * (g - K) + c]) - impulse) / span;
+    }
+    if (C == 4) o[3] = depthSensor_[i] - (zRef_[i] + depthOffset[g]);
+  }
+}
+
+void AuvCheckModel::simulationError(const Params& p, std::vector<double>& out) const {
+  TermReplayOptions o;
+  o.drive = hasChannel(log_, "depth_cmd", 2)   ? sim::ReplayDrive::DepthCommands
+            : hasChannel(log_, "pitch_cmd", 2) ? sim::ReplayDrive::PitchCommands
+                                                : sim::ReplayDrive::Actuators;
+  o.dt_s = opt_.replay_dt_s;
+  o.loading = loading(p);
+  o.mass_reference_time_s = t_ref_;
+  const TermReplayTrace tr = termReplay(model_, autopilot_, water_, log_, simAdjustment(total(p)), table_.t, o);
+  const std::size_t N = rowGrid_.size();
+  out.assign(5 * N, kNaN);
+  const double t0 = log_.time.front() + opt_.settle_s;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (table_.t[i] < t0) continue;
+    out[5 * i + 0] = obs_depth_[i] - tr.depth_m[i];
+    out[5 * i + 1] = obs_pitch_[i] - tr.pitch_rad[i];
+    out[5 * i + 2] = obs_roll_[i] - tr.roll_rad[i];
+    out[5 * i + 3] = obs_speed_[i] - tr.speed_mps[i];
+    out[5 * i + 4] = obs_vv_[i] - tr.vertical_velocity_mps[i];
+  }
+}
+
+double AuvCheckModel::netBuoyancyKg(const Params& p) const {
+  const sim::VehicleLoading L = loading(p);
+  const sim::FlownMass fm = sim::flownMass(model_, L.extra_masses, std::nullopt, L.error, 0.0);
+  TermInputs in;
+  in.pressure_dbar = ref_p_;
+  in.temperature_degC = ref_T_;
+  in.reference_temperature_degC = model_.body.hull.reference_temperature_degC;
+  Effects e;
+  applyEffects(total(p), in, e);
+  const double B = ref_rho_ * model_.body.hull.volumeAt(ref_T_, ref_p_) * e.volume_factor;
+  return B - fm.mass_kg;
+}
+
+double AuvCheckModel::cgX(const Params& p) const {
+  const sim::VehicleLoading L = loading(p);
+  return sim::flownMass(model_, L.extra_masses, std::nullopt, L.error, 0.0).r_g_m.x();
+}
+
+double AuvCheckModel::cgY(const Params& p) const {
+  const sim::VehicleLoading L = loading(p);
+  return sim::flownMass(model_, L.extra_masses, std::nullopt, L.error, 0.0).r_g_m.y();
+}
+
+std::string AuvCheckModel::description() const {
+  return "AUV rigid-body model of core/sim (Fossen form) on smoothed logged states; simulation: replay of the logged "
+         "commands through the model's autopilot; ballast state: net buoyancy and CG x/y";
+}
+
+}  // namespace auv::discrepancy

@@ -1,0 +1,114 @@
+#pragma once
+// The model check's view of a propeller-driven AUV: the simulator's own
+// rigid-body model (sim::Dynamics, Fossen form, CB origin) evaluated on the
+// recorded states.
+//  - Equation error per sample, in integral form: over a window of +-2 s the
+//    change of heave, pitch and roll velocity times the mass/inertia, minus
+//    the integral of the model's force/moment (heave, pitch, roll). The
+//    velocities come from short local fits of the logged states
+//    (savitzky_golay.h): w from the depth rate, speed and attitude, q and p
+//    from the attitude rates. Integrating the model instead of
+//    differentiating the log twice keeps the smoothing from biasing the
+//    comparison (a flattened q_dot would look like extra pitch damping).
+//    When the log has a CTD pressure besides the depth sensor, also depth
+//    reading - CTD depth.
+//  - Simulation error: the recording re-flown by its commands (term_replay.h:
+//    logged propeller speed, logged depth commands through the model's own
+//    autopilot) and compared in depth, pitch, roll, speed and vertical
+//    velocity.
+// Ballast state: net buoyancy (a mass at the CG) and CG x/y shifts relative to
+// the profile, always fitted; the CG y may carry a prior from a roll test.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "discrepancy/check_model.h"
+#include "discrepancy/term_replay.h"
+#include "hydrostatics/mass_properties.h"
+#include "missionlog/mission_log.h"
+#include "sim/depth_autopilot.h"
+#include "sim/vehicle_model.h"
+#include "sim/water_column.h"
+#include "vehicle/vehicle_profile.h"
+
+namespace auv::discrepancy {
+
+struct AuvCheckOptions {
+  std::vector<double> installed_kg;        // adjustment weight per profile point during the mission; empty = none
+  std::optional<double> cg_y_sigma_m;      // CG y known from a roll test to this sigma (at the profile's CG y)
+  double state_half_window_s = 1.0;     // local quartic fits of the states and actuators over +- this
+  int state_fit_order = 4;
+  double integral_half_window_s = 2.0;  // the equation error balances momentum over +- this
+  double row_interval_s = 0.0;             // 0 = the pitch channel's median interval (at least 0.2 s)
+  std::size_t max_rows = 40000;
+  double settle_s = 60.0;                  // simulation error not scored this long after the start
+  double replay_dt_s = 0.05;
+  double min_depth_m = 1.0;                // rows shallower are surface rows (not in the equation error)
+};
+
+class AuvCheckModel final : public CheckModel {
+ public:
+  // Needs depth, pitch, roll, speed, prop_rpm and elevator (InputError naming
+  // the missing channel); depth_cmd or pitch_cmd for the simulation. Keeps
+  // a copy of the channels the replay needs, not a reference to `log`.
+  AuvCheckModel(const MissionLog& log, const VehicleProfile& profile, const sim::VehicleModel& model,
+                const sim::DepthAutopilotConfig& autopilot, const AuvCheckOptions& options = {});
+
+  unsigned family() const override { return kAuvFamily; }
+  const SampleTable& samples() const override { return table_; }
+  std::vector<std::string> nuisanceNames() const override { return {"net_buoyancy_kg", "cg_x_shift_m", "cg_y_shift_m"}; }
+  Eigen::VectorXd nuisanceStart() const override;
+  Eigen::VectorXd nuisanceScale() const override;
+  Eigen::VectorXd nuisanceLower() const override;
+  Eigen::VectorXd nuisanceUpper() const override;
+  std::vector<NuisancePrior> priors() const override;
+  bool applicable(std::size_t term) const override;
+  std::vector<Channel> equationChannels() const override { return eq_; }
+  void equationError(const Params& p, std::span<const std::uint32_t> rows, double* out) const override;
+  std::vector<Channel> simulationChannels() const override {
+    return {Channel::kDepth, Channel::kPitch, Channel::kRoll, Channel::kSpeed, Channel::kVerticalVelocity};
+  }
+  void simulationError(const Params& p, std::vector<double>& out) const override;
+  double netBuoyancyKg(const Params& p) const override;
+  bool hasCg() const override { return true; }
+  double cgX(const Params& p) const override;
+  double cgY(const Params& p) const override;
+  std::string description() const override;
+  std::vector<std::string> notes() const override { return notes_; }
+
+  const TermValues& baseline() const { return baseline_; }
+  sim::VehicleLoading loading(const Params& p) const;
+
+ private:
+  // Smoothed states on the uniform grid (valid = every field finite).
+  struct GridState {
+    bool valid = false;
+    double u, A, th, thdot, ph, phdot;  // A = z_dot + u sin(theta)
+    double rpm, elev_rad, th_front, th_aft, rho, T, p;
+  };
+  TermValues total(const Params& p) const;
+
+  MissionLog log_;  // the channels the replay needs (a copy: the model outlives the caller's log)
+  sim::VehicleModel model_;
+  sim::DepthAutopilotConfig autopilot_;
+  sim::WaterColumn water_ = sim::WaterColumn::uniform(1025.0);
+  std::vector<MassItem> installed_;
+  AuvCheckOptions opt_;
+  TermValues baseline_{};
+  std::vector<GridState> grid_;
+  std::vector<double> gridT_;
+  double dt_ = 0.2;
+  int k_ = 10;                       // integral half window in grid steps
+  std::vector<std::size_t> rowGrid_;  // grid index of each scored row
+  std::vector<double> depthSensor_, zRef_;
+  SampleTable table_;
+  std::vector<Channel> eq_;
+  bool has_depth_ref_ = false;
+  double latitude_ = 45.0;
+  double t_ref_ = 0.0;
+  double ref_rho_ = 1025.0, ref_T_ = 10.0, ref_p_ = 0.0;
+  std::vector<double> obs_depth_, obs_pitch_, obs_roll_, obs_speed_, obs_vv_;  // at rows, for the simulation error
+  std::vector<std::string> notes_;
+};
+
+}  // namespace auv::discrepancy

@@ -1,0 +1,86 @@
+#pragma once
+// What the model check needs from a vehicle model, whatever the vehicle: the
+// samples it compares (with the variables the localisation breaks residuals
+// down by), the always-estimated ballast state ("nuisance" parameters), the
+// equation error per sample and the simulation error of a whole-log replay,
+// both for any combination of library terms. Two implementations: the
+// glider steady-glide model (glider_check_model.h) and the AUV rigid-body
+// model of core/sim (auv_check_model.h).
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "discrepancy/physics_terms.h"
+
+namespace auv::discrepancy {
+
+enum class Phase : std::uint8_t { kSurface, kDive, kClimb, kLevel, kTurn };
+const char* phaseName(Phase p);
+
+// One row per compared sample, in time order. NaN where the log cannot say.
+struct SampleTable {
+  std::vector<double> t;               // s since the log start
+  std::vector<int> block;              // glide or leg (a simulation restarts or is scored per block)
+  std::vector<int> unit;               // dive/yo or leg: the unit of cross-validation
+  std::vector<Phase> phase;
+  std::vector<double> pressure_dbar, temperature_degC, speed_mps, rpm, pitch_deg, since_actuator_s;
+  std::size_t size() const { return t.size(); }
+  int unitCount() const;
+};
+
+struct Params {
+  Eigen::VectorXd nuisance;
+  TermValues terms{};  // fitted values, added to the model's accepted baseline
+};
+
+// A Gaussian prior on one nuisance parameter (e.g. CG y from a roll test).
+struct NuisancePrior {
+  int index = -1;
+  double mean = 0.0;
+  double sigma = std::numeric_limits<double>::infinity();
+};
+
+class CheckModel {
+ public:
+  virtual ~CheckModel() = default;
+  virtual unsigned family() const = 0;  // VehicleFamilyBits
+  virtual const SampleTable& samples() const = 0;
+
+  // Ballast state: names, start values, finite-difference steps, bounds.
+  virtual std::vector<std::string> nuisanceNames() const = 0;
+  virtual Eigen::VectorXd nuisanceStart() const = 0;
+  virtual Eigen::VectorXd nuisanceScale() const = 0;
+  virtual Eigen::VectorXd nuisanceLower() const = 0;
+  virtual Eigen::VectorXd nuisanceUpper() const = 0;
+  virtual std::vector<NuisancePrior> priors() const { return {}; }
+
+  // Whether this log can show the term at all (channels present, vehicle kind).
+  virtual bool applicable(std::size_t term) const = 0;
+
+  // Equation error, observed - model, at `rows` (ascending): out has
+  // rows.size() * equationChannels().size() values, row-major, NaN where
+  // the channel is not available.
+  virtual std::vector<Channel> equationChannels() const = 0;
+  virtual void equationError(const Params& p, std::span<const std::uint32_t> rows, double* out) const = 0;
+
+  // Simulation error of a whole-log replay with these parameters, observed -
+  // simulated, samples().size() * simulationChannels().size(), NaN where not
+  // scored (channel missing, settling after a restart).
+  virtual std::vector<Channel> simulationChannels() const = 0;
+  virtual void simulationError(const Params& p, std::vector<double>& out) const = 0;
+
+  // The reported net buoyancy [kg] and CG offset [m] for a nuisance vector
+  // (and term values, which may move the reference state's buoyancy).
+  virtual double netBuoyancyKg(const Params& p) const = 0;
+  virtual bool hasCg() const { return false; }
+  virtual double cgX(const Params&) const { return std::numeric_limits<double>::quiet_NaN(); }
+  virtual double cgY(const Params&) const { return std::numeric_limits<double>::quiet_NaN(); }
+  virtual std::string description() const = 0;
+  virtual std::vector<std::string> notes() const { return {}; }
+};
+
+}  // namespace auv::discrepancy

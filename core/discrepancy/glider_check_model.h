@@ -1,0 +1,102 @@
+#pragma once
+// The model check's view of a glider: the steady-glide model of
+// core/analysis/glider_flight.h (Merckelbach et al. 2010) with the library
+// terms switched in, compared with the log in two ways:
+//  - equation error per sample: observed vertical velocity (from CTD pressure
+//    or depth over a 10 s boxcar) minus the steady-glide value at the logged
+//    pitch, pump volume and water; and, when the log has both a depth sensor
+//    and an independent CTD pressure, depth reading minus CTD depth;
+//  - simulation error: each glide flown forward in time from its first
+//    sample (depth integrated from the model's vertical velocity, pressure
+//    from the simulated depth), compared with the recorded depth and vertical
+//    velocity.
+// Ballast state: net buoyancy at the log's mean operating state (pump at its
+// zero reference, as in core/analysis) and the drag coefficient Cd0, both
+// always fitted. The model's own constants (lift slope, Cd1, wing area, pitch
+// correction, hull compressibility and thermal expansion) come from the
+// profile; a compressibility of 0 in the profile is taken as 0, so the check
+// can say whether the log needs one.
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/glider_flight.h"
+#include "discrepancy/check_model.h"
+#include "missionlog/mission_log.h"
+#include "vehicle/vehicle_profile.h"
+
+namespace auv::discrepancy {
+
+struct GliderCheckOptions {
+  double min_depth_m = 10.0;
+  double max_depth_m = std::numeric_limits<double>::infinity();
+  double min_pitch_deg = 10.0;
+  double max_roll_deg = 15.0;    // steeper banks (turns) are outside the 2-D steady glide
+  int min_yos_for_yo_units = 4;  // fewer yos: cross-validate over 10-minute pieces of the glides instead
+  double piece_s = 600.0;
+  double rate_window_s = 10.0;
+  std::size_t max_rows = 30000;  // evenly decimated beyond this (the rate is a 10 s boxcar)
+  double default_density_kgm3 = 1025.0;  // only when the log has no density
+};
+
+class GliderCheckModel final : public CheckModel {
+ public:
+  // Throws InputError when the log lacks pitch, pump volume or depth/pressure,
+  // or has no steady glide.
+  GliderCheckModel(const MissionLog& log, const VehicleProfile& profile, const GliderCheckOptions& options = {});
+  ~GliderCheckModel() override;
+
+  unsigned family() const override { return kGliderFamily; }
+  const SampleTable& samples() const override { return table_; }
+  std::vector<std::string> nuisanceNames() const override { return {"net_buoyancy_kg", "Cd0"}; }
+  Eigen::VectorXd nuisanceStart() const override;
+  Eigen::VectorXd nuisanceScale() const override;
+  Eigen::VectorXd nuisanceLower() const override;
+  Eigen::VectorXd nuisanceUpper() const override;
+  bool applicable(std::size_t term) const override;
+  std::vector<Channel> equationChannels() const override;
+  void equationError(const Params& p, std::span<const std::uint32_t> rows, double* out) const override;
+  std::vector<Channel> simulationChannels() const override;
+  void simulationError(const Params& p, std::vector<double>& out) const override;
+  double netBuoyancyKg(const Params& p) const override { return p.nuisance[0]; }
+  std::string description() const override;
+  std::vector<std::string> notes() const override { return notes_; }
+
+  const analysis::GliderFlightConstants& constants() const { return c_; }
+  const analysis::ReferenceState& reference() const { return ref_; }
+  const TermValues& baseline() const { return baseline_; }
+  bool hasDepthReference() const { return has_depth_ref_; }
+
+  // Model vertical velocity (up positive, through the water plus current)
+  // at a row for the given parameters, with pressure `p_dbar`.
+  double modelW(const Params& p, std::size_t row, double p_dbar) const;
+
+ private:
+  struct Row {
+    double pitch_rad, pump_m3, rho, T, p, w_obs, depth_sensor, z_ref;
+  };
+  class AlphaCache;
+  struct Prepared {
+    TermValues terms{};
+    double V0 = 0.0, Cd0 = 0.0;
+    const std::vector<double>* alpha = nullptr;
+  };
+  Prepared prepare(const Params& p) const;
+  double rowW(const Prepared& q, std::size_t row, double p_dbar, Effects& e) const;
+  double volumeFactor(const TermValues& terms, double p_dbar, double T, double hours) const;
+
+  analysis::GliderFlightConstants c_;
+  analysis::ReferenceState ref_;
+  TermValues baseline_{};
+  std::vector<Row> rows_;
+  SampleTable table_;
+  bool has_depth_ref_ = false;  // a depth sensor and an independent CTD pressure
+  double latitude_ = 45.0;
+  double t_ref_ = 0.0;
+  std::string obs_channel_;
+  std::vector<std::string> notes_;
+  std::unique_ptr<AlphaCache> alpha_;
+};
+
+}  // namespace auv::discrepancy

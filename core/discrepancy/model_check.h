@@ -1,0 +1,103 @@
+#pragma once
+// The model check: when a recording and the model disagree, find where,
+// name the physics the model left out, fit it and show the fit improve.
+//
+//   1. Base fit: the ballast state alone (always estimated), by
+//      Levenberg-Marquardt on the equation error.
+//   2. Linearise every applicable library term around it; forward stepwise
+//      selection with BIC on the effective sample size, t-test and
+//      cross-validation across dives/legs; bootstrap inclusion probabilities.
+//   3. Identifiability: correlation of the candidate regressors after the
+//      ballast state is projected out; pairs that this log cannot separate are
+//      reported with the manoeuvre that would separate them.
+//   4. Each selected term must also improve the SIMULATION error on data not
+//      used to fit it (two halves of the dives/legs, each fitted on one half
+//      and scored on the other); only then is it accepted.
+//   5. Final joint fit (ballast state + accepted terms), uncertainties, RMS
+//      before/after per channel on fitted and held-out data, and where each
+//      residual and each accepted term concentrates (localisation.h).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "discrepancy/check_model.h"
+#include "discrepancy/localisation.h"
+#include "discrepancy/sparse_selection.h"
+
+namespace auv::discrepancy {
+
+struct ModelCheckOptions {
+  SelectionOptions selection;
+  int bootstrap_replicates = 60;
+  double min_inclusion = 0.6;    // bootstrap inclusion probability to go on to the simulation check
+  double min_sim_gain = 0.01;    // relative drop of the held-out simulation cost to accept
+  double collinear_threshold = 0.95;  // reported as "cannot be told apart"
+  double degenerate_r2 = 0.995;       // share of a regressor the ballast state explains beyond which the term is not tried
+  double stlsq_threshold = 0.5;  // in units of each term's typical value (comparison only)
+  std::size_t max_fit_rows = 30000;
+  std::uint64_t seed = 1;
+  std::vector<std::string> only_terms;  // empty = every applicable term
+};
+
+struct ChannelRms {
+  Channel channel = Channel::kDepth;
+  std::string source;  // "equation" or "simulation"
+  double fitted_before = 0.0, fitted_after = 0.0;    // display unit; before = ballast state only
+  double heldout_before = 0.0, heldout_after = 0.0;  // fitted on one half of the units, scored on the other
+  std::size_t samples = 0;
+};
+
+struct MissingPhysics {
+  std::string id, unit;
+  double value = 0.0, sigma = 0.0;  // display unit
+  Channel channel = Channel::kDepth;   // simulation channel it improves most
+  double rms_before = 0.0, rms_after = 0.0;  // held-out simulation RMS on `channel`, display unit
+  std::string where;
+  double inclusion_probability = 0.0;
+  double delta_bic = 0.0;
+  double t_value = 0.0;
+  double heldout_gain = 0.0;  // relative drop of the held-out simulation cost
+  std::vector<std::string> confused_with;  // candidates this log cannot tell it from
+  std::string evidence;  // set when a prior (an independent measurement) is what separates it
+};
+
+struct CandidateReport {
+  std::string id;
+  std::string status;  // "accepted" or why not
+  double value = 0.0, sigma = 0.0;  // linearised full-data fit with the ballast state, display unit
+  double t_value = 0.0;
+  double inclusion_probability = 0.0;
+  double nuisance_r2 = 0.0;  // share of its regressor the ballast state explains
+};
+
+struct IdentifiabilityIssue {
+  std::string a, b;  // term ids ("ballast_state" for the nuisance)
+  double correlation = 0.0;
+  std::string message;
+};
+
+struct ModelCheckResult {
+  std::string model;
+  std::size_t samples = 0;
+  int units = 0;
+  double neff_ratio = 1.0;
+  std::vector<MissingPhysics> missing_physics;  // best first
+  std::vector<CandidateReport> candidates;
+  std::vector<IdentifiabilityIssue> identifiability;
+  std::vector<std::string> stlsq_selected;      // SINDy-style comparison
+  std::vector<ChannelRms> rms;
+  std::vector<Localisation> localisation;       // residuals of the ballast-only model
+  // Ballast state, jointly with the accepted terms (and without, for comparison).
+  double net_buoyancy_kg = 0.0, net_buoyancy_sigma_kg = 0.0, net_buoyancy_base_kg = 0.0;
+  bool has_cg = false;
+  double cg_x_mm = 0.0, cg_y_mm = 0.0, cg_x_sigma_mm = 0.0, cg_y_sigma_mm = 0.0;
+  std::vector<std::string> nuisance_names;
+  std::vector<double> nuisance, nuisance_sigma;
+  TermValues accepted{};  // SI, fitted increments over the profile's baseline
+  Params final_params, base_params;
+  std::vector<std::string> notes, warnings;
+};
+
+ModelCheckResult runModelCheck(const CheckModel& model, const ModelCheckOptions& options = {});
+
+}  // namespace auv::discrepancy

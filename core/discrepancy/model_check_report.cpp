@@ -1,0 +1,164 @@
+#include "discrepancy/model_check_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace auv::discrepancy {
+
+namespace {
+
+// Six significant digits: coefficients of 1e-6 keep their digits, and the
+// file does not carry the noise of the last bits.
+nlohmann::json num(double v) {
+  if (!std::isfinite(v)) return nullptr;
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return std::strtod(b, nullptr);
+}
+
+nlohmann::json localisationJson(const Localisation& l) {
+  nlohmann::json f = nlohmann::json::array();
+  for (const FactorFinding& x : l.ranked) {
+    nlohmann::json bins = nlohmann::json::array();
+    for (const BinSummary& b : x.bins) bins.push_back({{"label", b.label}, {"mean", num(b.mean)}, {"rms", num(b.rms)}, {"count", b.count}});
+    nlohmann::json j = {{"factor", x.factor}, {"share", num(x.share)}, {"text", x.text}, {"bins", bins}};
+    if (x.linear) j["slope"] = {{"value", num(x.slope)}, {"per", x.step}};
+    f.push_back(j);
+  }
+  return {{"channel", channelName(l.channel)}, {"unit", channelUnit(l.channel)}, {"source", l.source},
+          {"rms", num(l.rms)},            {"mean", num(l.mean)},               {"samples", l.count},
+          {"summary", l.summary},        {"ranked", f}};
+}
+
+}  // namespace
+
+nlohmann::json toJson(const ModelCheckResult& r) {
+  nlohmann::json j;
+  nlohmann::json mp = nlohmann::json::array();
+  for (const MissingPhysics& m : r.missing_physics) {
+    nlohmann::json x = {{"id", m.id},
+                        {"value", num(m.value)},
+                        {"unit", m.unit},
+                        {"sigma", num(m.sigma)},
+                        {"rms_before", num(m.rms_before)},
+                        {"rms_after", num(m.rms_after)},
+                        {"channel", channelName(m.channel)},
+                        {"channel_unit", channelUnit(m.channel)},
+                        {"where", m.where},
+                        {"inclusion_probability", num(m.inclusion_probability)},
+                        {"t_value", num(m.t_value)},
+                        {"delta_bic", num(m.delta_bic)},
+                        {"heldout_gain", num(m.heldout_gain)}};
+    if (!m.confused_with.empty()) x["confused_with"] = m.confused_with;
+    if (!m.evidence.empty()) x["evidence"] = m.evidence;
+    mp.push_back(x);
+  }
+  j["missing_physics"] = mp;
+  j["net_buoyancy_kg"] = num(r.net_buoyancy_kg);
+  j["net_buoyancy_sigma_kg"] = num(r.net_buoyancy_sigma_kg);
+  if (r.has_cg) {
+    j["cg_offset_mm"] = {{"x", num(r.cg_x_mm)}, {"y", num(r.cg_y_mm)}};
+    j["cg_offset_sigma_mm"] = {{"x", num(r.cg_x_sigma_mm)}, {"y", num(r.cg_y_sigma_mm)}};
+  }
+  nlohmann::json mc;
+  mc["model"] = r.model;
+  mc["samples"] = r.samples;
+  mc["units"] = r.units;
+  mc["effective_sample_share"] = num(r.neff_ratio);
+  mc["net_buoyancy_without_terms_kg"] = num(r.net_buoyancy_base_kg);
+  nlohmann::json ballast = nlohmann::json::object();
+  for (std::size_t k = 0; k < r.nuisance_names.size(); ++k)
+    ballast[r.nuisance_names[k]] = {{"value", num(r.nuisance[k])}, {"sigma", num(r.nuisance_sigma[k])}};
+  mc["ballast_state"] = ballast;
+  nlohmann::json cands = nlohmann::json::array();
+  for (const CandidateReport& c : r.candidates)
+    cands.push_back({{"id", c.id},
+                     {"status", c.status},
+                     {"value_alone", num(c.value)},
+                     {"sigma_alone", num(c.sigma)},
+                     {"t_value", num(c.t_value)},
+                     {"inclusion_probability", num(c.inclusion_probability)},
+                     {"ballast_state_r2", num(c.nuisance_r2)}});
+  mc["candidates"] = cands;
+  nlohmann::json ident = nlohmann::json::array();
+  for (const IdentifiabilityIssue& i : r.identifiability)
+    ident.push_back({{"a", i.a}, {"b", i.b}, {"correlation", num(i.correlation)}, {"message", i.message}});
+  mc["identifiability"] = ident;
+  mc["stlsq_selected"] = r.stlsq_selected;
+  nlohmann::json rms = nlohmann::json::array();
+  for (const ChannelRms& c : r.rms)
+    rms.push_back({{"channel", channelName(c.channel)},
+                   {"unit", channelUnit(c.channel)},
+                   {"source", c.source},
+                   {"fitted_before", num(c.fitted_before)},
+                   {"fitted_after", num(c.fitted_after)},
+                   {"heldout_before", num(c.heldout_before)},
+                   {"heldout_after", num(c.heldout_after)},
+                   {"samples", c.samples}});
+  mc["rms"] = rms;
+  nlohmann::json loc = nlohmann::json::array();
+  for (const Localisation& l : r.localisation) loc.push_back(localisationJson(l));
+  mc["localisation"] = loc;
+  mc["notes"] = r.notes;
+  mc["warnings"] = r.warnings;
+  j["model_check"] = mc;
+  return j;
+}
+
+void mergeIntoAnalysisJson(nlohmann::json& a, const ModelCheckResult& r) {
+  const nlohmann::json m = toJson(r);
+  nlohmann::json mc = m["model_check"];
+  mc["analysis_estimate"] = {{"net_buoyancy_kg", a.value("net_buoyancy_kg", nlohmann::json())},
+                             {"net_buoyancy_sigma_kg", a.value("net_buoyancy_sigma_kg", nlohmann::json())},
+                             {"cg_offset_mm", a.value("cg_offset_mm", nlohmann::json())}};
+  a["missing_physics"] = m["missing_physics"];
+  a["net_buoyancy_kg"] = m["net_buoyancy_kg"];
+  a["net_buoyancy_sigma_kg"] = m["net_buoyancy_sigma_kg"];
+  if (m.contains("cg_offset_mm")) {
+    a["cg_offset_mm"] = m["cg_offset_mm"];
+    a["cg_offset_sigma_mm"] = m["cg_offset_sigma_mm"];
+  }
+  a["model_check"] = mc;
+}
+
+std::string toText(const ModelCheckResult& r) {
+  std::string s;
+  char b[512];
+  s += "Model check: " + r.model + "\n";
+  std::snprintf(b, sizeof b, "  %zu samples in %d dives/legs (effective share %.3f)\n", r.samples, r.units, r.neff_ratio);
+  s += b;
+  if (r.missing_physics.empty()) {
+    s += "  Missing physics: none found (the model with its ballast state explains the log within its noise).\n";
+  } else {
+    s += "  Missing physics, best first:\n";
+    for (const MissingPhysics& m : r.missing_physics) {
+      std::snprintf(b, sizeof b, "    %-24s %.4g +- %.2g %s; held-out %s RMS %.3g -> %.3g %s\n", m.id.c_str(), m.value, m.sigma,
+                    m.unit.c_str(), channelName(m.channel), m.rms_before, m.rms_after, channelUnit(m.channel));
+      s += b;
+      if (!m.where.empty()) s += "      where: " + m.where + "\n";
+      if (!m.evidence.empty()) s += "      note: " + m.evidence + "\n";
+    }
+  }
+  std::snprintf(b, sizeof b, "  Net buoyancy (jointly with the accepted terms): %+.3f +- %.3f kg (without them %+.3f kg)\n",
+                r.net_buoyancy_kg, r.net_buoyancy_sigma_kg, r.net_buoyancy_base_kg);
+  s += b;
+  if (r.has_cg) {
+    std::snprintf(b, sizeof b, "  CG offset (CG - CB): x %+.2f +- %.2f mm, y %+.2f +- %.2f mm\n", r.cg_x_mm, r.cg_x_sigma_mm,
+                  r.cg_y_mm, r.cg_y_sigma_mm);
+    s += b;
+  }
+  s += "  RMS per channel (before -> after; fitted | held-out):\n";
+  for (const ChannelRms& c : r.rms) {
+    std::snprintf(b, sizeof b, "    %-10s %-18s %.4g -> %.4g | %.4g -> %.4g %s\n", c.source.c_str(), channelName(c.channel),
+                  c.fitted_before, c.fitted_after, c.heldout_before, c.heldout_after, channelUnit(c.channel));
+    s += b;
+  }
+  s += "  Where the ballast-only model misses:\n";
+  for (const Localisation& l : r.localisation) s += "    " + l.source + ", " + channelName(l.channel) + ": " + l.summary + "\n";
+  for (const IdentifiabilityIssue& i : r.identifiability) s += "  Identifiability: " + i.message + "\n";
+  for (const std::string& w : r.warnings) s += "  Warning: " + w + "\n";
+  return s;
+}
+
+}  // namespace auv::discrepancy

@@ -1,0 +1,152 @@
+#include "discrepancy/term_replay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/input_error.h"
+#include "common/units.h"
+#include "missionlog/resample.h"
+#include "sim/step_engine.h"
+
+namespace auv::discrepancy {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRhoRef = 1025.0;
+
+// `name` on the grid; before the first and across gaps the nearest earlier
+// (or the first) value holds, as in sim::replay.
+std::vector<double> onGrid(const MissionLog& log, const char* name, const std::vector<double>& grid, Interpolation m) {
+  const LogChannel* c = log.find(name);
+  if (c == nullptr || c->validCount() == 0) return {};
+  std::vector<double> v = resample(log.series(name), grid, {m});
+  const auto valid = std::find_if(v.begin(), v.end(), [](double x) { return !std::isnan(x); });
+  double last = valid == v.end() ? kNaN : *valid;
+  for (double& x : v) {
+    if (std::isnan(x)) x = last;
+    else last = x;
+  }
+  return v;
+}
+
+}  // namespace
+
+double propKQ0ForTorque(const sim::Propeller& p, double k) {
+  const double D = p.diameter_m;
+  return k * 3600.0 / (kRhoRef * D * D * D * D * D);
+}
+
+sim::VehicleModel adjustedModel(const sim::VehicleModel& model, const SimAdjustment& a) {
+  sim::VehicleModel m = model;
+  m.body.hull.compressibility_per_dbar += a.compressibility_per_dbar;
+  m.body.hull.thermal_expansion_per_degC += a.thermal_expansion_per_degC;
+  if (a.prop_torque_nm_per_rpm2 != 0.0 && m.prop.diameter_m > 0.0) {
+    const double signedKQ = m.prop.torque_sign * m.prop.KQ0 + propKQ0ForTorque(m.prop, a.prop_torque_nm_per_rpm2);
+    m.prop.torque_sign = signedKQ < 0.0 ? -1.0 : 1.0;
+    m.prop.KQ0 = std::abs(signedKQ);
+  }
+  m.hydro.Mqq_kgm2 *= 1.0 + a.pitch_damping_scale;
+  return m;
+}
+
+TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopilotConfig& apcfg,
+                           const sim::WaterColumn& water, const MissionLog& log, const SimAdjustment& a,
+                           std::span<const double> times, const TermReplayOptions& opt) {
+  if (log.rowCount() < 2) throw InputError("time", "the log has fewer than two rows", "replay a longer log");
+  const sim::VehicleModel model = adjustedModel(base, a);
+  const sim::ReplayDrive drive = sim::resolveReplayDrive(model, log, opt.drive);
+  const double dt = opt.dt_s;
+  const double t0 = log.time.front();
+  const std::vector<double> grid = uniformGrid(t0, log.time.back(), dt);
+  const long n_steps = static_cast<long>(grid.size()) - 1;
+  const std::vector<double> rpm = onGrid(log, "prop_rpm", grid, Interpolation::kLinear);
+  if (rpm.empty()) throw InputError("prop_rpm", "the log has no prop_rpm samples", "an AUV replay needs the propeller speed");
+  std::vector<double> elevator, th_front, th_aft, pitch_cmd, depth_cmd;
+  if (drive == sim::ReplayDrive::Actuators) {
+    elevator = onGrid(log, "elevator", grid, Interpolation::kLinear);
+    if (model.thruster_count > 0) {
+      th_front = onGrid(log, "thruster_front_rpm", grid, Interpolation::kLinear);
+      th_aft = onGrid(log, "thruster_aft_rpm", grid, Interpolation::kLinear);
+    }
+  } else {
+    depth_cmd = onGrid(log, "depth_cmd", grid, Interpolation::kHold);
+    if (drive == sim::ReplayDrive::PitchCommands) pitch_cmd = onGrid(log, "pitch_cmd", grid, Interpolation::kLinear);
+  }
+  // Output step of each requested time.
+  std::vector<long> stepOf(times.size());
+  for (std::size_t i = 0; i < times.size(); ++i) stepOf[i] = std::clamp(std::lround((times[i] - t0) / dt), 0L, n_steps);
+
+  const auto at0 = [&](const char* name, double fallback) {
+    const std::vector<double> v = onGrid(log, name, {t0}, Interpolation::kLinear);
+    return v.empty() || std::isnan(v.front()) ? fallback : v.front();
+  };
+  sim::InitialState init;
+  init.depth_m = at0("depth", 0.0) - a.depth_offset_m;
+  init.pitch_rad = units::degToRad(at0("pitch", 0.0)) - a.pitch_bias_rad;
+  init.roll_rad = units::degToRad(at0("roll", 0.0)) - a.roll_bias_rad;
+  init.heading_rad = units::degToRad(at0("heading", 0.0));
+  init.speed_mps = at0("speed", 0.0);
+  init.prop_rps = rpm.front() / 60.0;
+
+  sim::StepEngine eng(model, water, dt, false);
+  eng.start(init, opt.loading);
+  const long control_every = std::max(1L, std::lround(apcfg.sample_time_s / dt));
+  sim::DepthAutopilot ap(apcfg, model);
+  const double W0 = eng.weightN();
+  const double dW_per_s = units::g0 * a.mass_drift_kg_per_h / 3600.0;
+  if (opt.preload_hover_integrator) ap.preloadHoverIntegrator(eng.buoyancyN() - (W0 + dW_per_s * (t0 - opt.mass_reference_time_s)));
+  sim::ActuatorDemand demand;
+  sim::GaussianSource no_noise(0);
+  const sim::SensorNoise exact;
+
+  TermReplayTrace tr;
+  for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps}) v->assign(times.size(), kNaN);
+  std::size_t next = 0;
+  for (long k = 0; k <= n_steps; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (k > 0) eng.sampleWater();
+    const double W = W0 + dW_per_s * (grid[i] - opt.mass_reference_time_s);
+    sim::ActuatorState& act = eng.actuators();
+    act.prop_rps = std::max(0.0, rpm[i] / 60.0);
+    if (drive == sim::ReplayDrive::Actuators) {
+      act.plane_rad = -units::degToRad(elevator[i]);
+      if (model.thruster_count > 0) {
+        act.thruster_rpm[0] = th_front[i];
+        act.thruster_rpm[1] = th_aft[i];
+      }
+    }
+    // What the sensors say: the autopilot steers on them, the log records them.
+    sim::Measurement meas = eng.measure(no_noise, exact);
+    meas.depth_m += a.depth_offset_m;
+    meas.pitch_rad += a.pitch_bias_rad;
+    meas.depth_rate_mps -= a.vertical_current_mps;
+    if (k % control_every == 0 && drive != sim::ReplayDrive::Actuators) {
+      sim::Setpoint sp{depth_cmd[i], 0.0, 0.0};
+      if (drive == sim::ReplayDrive::PitchCommands) {
+        sp.pitch_rad = units::degToRad(pitch_cmd[i]);
+        sp.pitch_is_demand = true;
+      }
+      demand = ap.update(meas, sp, eng.water().density_kgm3);
+    }
+    while (next < times.size() && stepOf[next] == k) {
+      tr.depth_m[next] = meas.depth_m;
+      tr.pitch_rad[next] = meas.pitch_rad;
+      tr.roll_rad[next] = eng.state()[sim::kPhi] + a.roll_bias_rad;
+      tr.speed_mps[next] = meas.speed_mps;
+      tr.vertical_velocity_mps[next] = -meas.depth_rate_mps;
+      ++next;
+    }
+    if (k == n_steps) break;
+    if (drive == sim::ReplayDrive::Actuators) {
+      eng.stepHeld(W);
+    } else {
+      eng.step(W, demand, 0.0);
+    }
+    eng.state()[sim::kZ] -= a.vertical_current_mps * dt;
+  }
+  return tr;
+}
+
+}  // namespace auv::discrepancy

@@ -1,0 +1,49 @@
+#pragma once
+// Re-simulating a recording with library terms switched on. The model
+// parameters a term changes (hull compressibility and thermal expansion,
+// propeller reaction torque, quadratic pitch damping) go into a copy of the
+// sim::VehicleModel; the rest need hooks in the step loop that sim::replay
+// does not have: a weight that drifts with time, a vertical current moving
+// the vehicle over ground, and sensor errors seen by the autopilot and the
+// log (pitch/roll bias, depth offset). The loop is sim::replay's (same
+// StepEngine, grid, drives and autopilot); with no hooks active it gives the
+// same trace, which a test checks (docs/decisions/model-check-replay.md).
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "discrepancy/physics_terms.h"
+#include "missionlog/mission_log.h"
+#include "sim/depth_autopilot.h"
+#include "sim/flown_mass.h"
+#include "sim/replay.h"
+#include "sim/vehicle_model.h"
+#include "sim/water_column.h"
+
+namespace auv::discrepancy {
+
+// The model with the parameter-type terms applied (a copy).
+sim::VehicleModel adjustedModel(const sim::VehicleModel& model, const SimAdjustment& a);
+
+// Extra propeller K_Q0 (signed, the sim's torque_sign times K_Q0) for a torque
+// coefficient [N m / rpm^2] at bollard pull in water of 1025 kg/m3.
+double propKQ0ForTorque(const sim::Propeller& p, double nm_per_rpm2);
+
+struct TermReplayOptions {
+  sim::ReplayDrive drive = sim::ReplayDrive::DepthCommands;
+  double dt_s = 0.05;
+  sim::VehicleLoading loading;
+  bool preload_hover_integrator = true;  // as a simulated mission starts (sim::simulate)
+  double mass_reference_time_s = 0.0;    // the drifting mass equals the loading's at this time
+};
+
+// Simulated sensor readings at `times` (ascending, within the log).
+struct TermReplayTrace {
+  std::vector<double> depth_m, pitch_rad, roll_rad, speed_mps, vertical_velocity_mps;  // vv up positive, over ground
+};
+
+TermReplayTrace termReplay(const sim::VehicleModel& model, const sim::DepthAutopilotConfig& autopilot,
+                           const sim::WaterColumn& water, const MissionLog& recorded, const SimAdjustment& terms,
+                           std::span<const double> times, const TermReplayOptions& options);
+
+}  // namespace auv::discrepancy

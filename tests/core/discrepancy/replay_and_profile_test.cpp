@@ -1,0 +1,198 @@
+// The replay with term hooks against the simulator's own replay, the
+// simulator knobs of the parameter terms, "model it" (accepted terms written
+// into a profile copy and used from then on) and the JSON contract.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analysis/analysis_report.h"
+#include "analysis/mission_analysis.h"
+#include "discrepancy/model_check_report.h"
+#include "discrepancy/profile_update.h"
+#include "discrepancy/synthetic_auv.h"
+#include "discrepancy/synthetic_glider.h"
+#include "discrepancy/term_replay.h"
+#include "discrepancy/vehicle_check.h"
+#include "sim/mission_plan.h"
+#include "sim/replay.h"
+#include "sim/water_from_log.h"
+#include "vehicle/json_reader.h"
+#include "vehicle/profile_loader.h"
+
+namespace auv::discrepancy {
+namespace {
+
+const std::string kVehicles = std::string(AUV_RESOURCE_DIR) + "/vehicles/";
+
+struct Auv {
+  VehicleProfile profile = loadVehicleProfile(kVehicles + "delphin2.json");
+  sim::SimVehicle vehicle = sim::loadSimVehicle(profile, AUV_RESOURCE_DIR);
+  MissionLog log;
+  Auv() {
+    SyntheticAuvTruth t;
+    t.ballast_error.net_buoyancy_kg = 0.2;
+    SyntheticAuvMission m;
+    m.legs_count = 3;
+    m.leg_s = 120.0;
+    m.seed = 4;
+    log = synthesizeAuvLog(vehicle, "delphin2", t, m);
+  }
+};
+const Auv& auvCase() {
+  static const Auv a;
+  return a;
+}
+
+TEST(TermReplay, WithoutHooksItIsTheSimulatorsReplay) {
+  const Auv& a = auvCase();
+  const sim::WaterColumn water = sim::waterColumnFromLog(a.log);
+  sim::ReplayOptions ro;
+  ro.drive = sim::ReplayDrive::DepthCommands;
+  const sim::SimTrace ref = sim::replay(a.vehicle.model, a.vehicle.autopilot, water, a.log, ro);
+  TermReplayOptions to;
+  to.drive = sim::ReplayDrive::DepthCommands;
+  to.preload_hover_integrator = false;  // sim::replay starts its integrators at zero
+  const TermReplayTrace tr = termReplay(a.vehicle.model, a.vehicle.autopilot, water, a.log, {}, a.log.time, to);
+  ASSERT_EQ(ref.size(), a.log.rowCount());
+  for (std::size_t i = 0; i < ref.size(); i += 37) {
+    EXPECT_NEAR(tr.depth_m[i], ref.depth_m[i], 1e-9);
+    EXPECT_NEAR(tr.pitch_rad[i], ref.pitch_rad[i], 1e-9);
+    EXPECT_NEAR(tr.roll_rad[i], ref.roll_rad[i], 1e-9);
+    EXPECT_NEAR(tr.speed_mps[i], ref.speed_mps[i], 1e-9);
+  }
+}
+
+TEST(TermReplay, SensorHooksActWhereTheSensorIsRead) {
+  const Auv& a = auvCase();
+  const sim::WaterColumn water = sim::waterColumnFromLog(a.log);
+  TermReplayOptions to;
+  const TermReplayTrace base = termReplay(a.vehicle.model, a.vehicle.autopilot, water, a.log, {}, a.log.time, to);
+  SimAdjustment roll;
+  roll.roll_bias_rad = 0.02;  // read by nobody but the log
+  const TermReplayTrace r = termReplay(a.vehicle.model, a.vehicle.autopilot, water, a.log, roll, a.log.time, to);
+  for (std::size_t i = 100; i < r.roll_rad.size(); i += 53) EXPECT_NEAR(r.roll_rad[i] - base.roll_rad[i], 0.02, 1e-9);
+  // A depth offset is read by the autopilot too: it steers the reading to the
+  // command, so the logged depth stays, the vehicle flies 0.5 m shallower.
+  SimAdjustment off;
+  off.depth_offset_m = 0.5;
+  const TermReplayTrace d = termReplay(a.vehicle.model, a.vehicle.autopilot, water, a.log, off, a.log.time, to);
+  double mean = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = d.depth_m.size() / 2; i < d.depth_m.size(); ++i, ++n) mean += d.depth_m[i] - base.depth_m[i];
+  EXPECT_LT(std::abs(mean / static_cast<double>(n)), 0.05);
+}
+
+TEST(TermReplay, ParameterTermsChangeTheModel) {
+  const sim::VehicleModel& m = auvCase().vehicle.model;
+  SimAdjustment a;
+  a.prop_torque_nm_per_rpm2 = 2e-6;
+  a.pitch_damping_scale = 1.0;
+  a.compressibility_per_dbar = 4e-6;
+  const sim::VehicleModel x = adjustedModel(m, a);
+  // Reaction torque at bollard pull, rho 1025: rho n^2 D^5 K_Q0 with n in rev/s.
+  const double dKQ = x.prop.torque_sign * x.prop.KQ0 - m.prop.torque_sign * m.prop.KQ0;
+  EXPECT_NEAR(1025.0 * std::pow(m.prop.diameter_m, 5) * dKQ / 3600.0, 2e-6, 1e-15);
+  EXPECT_DOUBLE_EQ(x.hydro.Mqq_kgm2, 2.0 * m.hydro.Mqq_kgm2);
+  EXPECT_DOUBLE_EQ(x.body.hull.compressibility_per_dbar, m.body.hull.compressibility_per_dbar + 4e-6);
+}
+
+TEST(ProfileUpdate, TermsGoWhereTheLoadersReadThem) {
+  const Auv& a = auvCase();
+  ModelCheckResult r;
+  auto add = [&](const char* id, double si) {
+    const std::size_t k = *findTerm(id);
+    r.accepted[k] = si;
+    MissingPhysics m;
+    m.id = id;
+    m.unit = std::string(termLibrary()[k].unit);
+    m.value = si * termLibrary()[k].display_scale;
+    r.missing_physics.push_back(m);
+  };
+  add("propeller_torque", 2e-6);
+  add("quadratic_pitch_damping", 0.5);
+  add("hull_compressibility", 3e-6);
+  add("vertical_current", 0.004);
+  const nlohmann::json doc = JsonReader::parseFile(a.profile.file);
+  const nlohmann::json out = profileWithAcceptedTerms(doc, a.profile, r, "demo.csv");
+  EXPECT_DOUBLE_EQ(out["hull"]["compressibility_per_dbar"].get<double>(), 3e-6);
+  EXPECT_DOUBLE_EQ(out["hydrodynamics"]["Mqq_kgm2_per_rad2"].get<double>(), 1.5 * doc["hydrodynamics"]["Mqq_kgm2_per_rad2"].get<double>());
+  EXPECT_DOUBLE_EQ(out["model_check"]["terms"]["vertical_current"].get<double>(), 0.004);
+  EXPECT_EQ(out["model_check"]["accepted"].size(), 4u);
+  EXPECT_EQ(out["model_check"]["accepted"][0]["log"], "demo.csv");
+  // The simulator reads the new profile.
+  const VehicleProfile v2 = parseVehicleProfile(out.dump(), "copy.json");
+  const sim::SimVehicle s2 = sim::loadSimVehicle(v2, AUV_RESOURCE_DIR);
+  const sim::VehicleModel& m0 = a.vehicle.model;
+  EXPECT_NEAR(1025.0 * std::pow(m0.prop.diameter_m, 5) * (s2.model.prop.KQ0 - m0.prop.KQ0) / 3600.0, 2e-6, 1e-15);
+  EXPECT_DOUBLE_EQ(s2.model.body.hull.compressibility_per_dbar, 3e-6);
+  EXPECT_DOUBLE_EQ(acceptedTermsFromProfile(v2.sections, v2.file)[*findTerm("vertical_current")], 0.004);
+}
+
+// The loop of issue 5 on a glider: find, write into the profile, check again
+// with the new profile: nothing is missing any more, and the simulation
+// error is what the accepted fit promised.
+TEST(ModelIt, AnAcceptedTermIsUsedFromThenOn) {
+  const VehicleProfile v = loadVehicleProfile(kVehicles + "slocum_g2.json");
+  SyntheticGliderTruth t;
+  t.constants.mass_kg = v.mass_kg;
+  t.constants.thermal_expansion_per_degC = v.hull.thermal_expansion_per_degC;
+  t.constants.reference_temperature_degC = v.hull.reference_temperature_degC;
+  t.constants.compressibility_per_dbar = 6e-6;
+  SyntheticGliderMission m;
+  m.seed = 31;
+  const MissionLog log = synthesizeGliderLog(t, m);
+  const auto first = runModelCheck(*makeCheckModel(log, v, AUV_RESOURCE_DIR));
+  ASSERT_EQ(first.missing_physics.size(), 1u);
+  ASSERT_EQ(first.missing_physics[0].id, "hull_compressibility");
+  const nlohmann::json doc = profileWithAcceptedTerms(JsonReader::parseFile(v.file), v, first, "synthetic.csv");
+  const VehicleProfile v2 = parseVehicleProfile(doc.dump(), "slocum_g2.model-check.json");
+  EXPECT_DOUBLE_EQ(v2.hull.compressibility_per_dbar, first.accepted[*findTerm("hull_compressibility")]);
+  const auto second = runModelCheck(*makeCheckModel(log, v2, AUV_RESOURCE_DIR));
+  EXPECT_TRUE(second.missing_physics.empty());
+  EXPECT_NEAR(second.net_buoyancy_kg, first.net_buoyancy_kg, 3.0 * first.net_buoyancy_sigma_kg + 1e-3);
+  for (const ChannelRms& c : second.rms)
+    if (c.source == "simulation" && c.channel == Channel::kVerticalVelocity) {
+      for (const ChannelRms& f : first.rms)
+        if (f.source == c.source && f.channel == c.channel) {
+          EXPECT_NEAR(c.fitted_before, f.fitted_after, 0.02 * f.fitted_after);
+        }
+    }
+  // The analysis reads the hull compressibility from the copy too.
+  const analysis::AnalysisReport ar = analysis::analyzeMission(log, v2);
+  EXPECT_DOUBLE_EQ(ar.details["glider_fit"]["constants"]["compressibility_per_dbar"].get<double>(), v2.hull.compressibility_per_dbar);
+}
+
+TEST(ModelCheckJson, TheContractFieldsAreThere) {
+  const VehicleProfile v = loadVehicleProfile(kVehicles + "slocum_g2.json");
+  SyntheticGliderTruth t;
+  t.constants.mass_kg = v.mass_kg;
+  t.constants.thermal_expansion_per_degC = v.hull.thermal_expansion_per_degC;
+  t.constants.reference_temperature_degC = v.hull.reference_temperature_degC;
+  t.constants.compressibility_per_dbar = 6e-6;
+  SyntheticGliderMission m;
+  m.seed = 31;
+  const MissionLog log = synthesizeGliderLog(t, m);
+  const ModelCheckResult r = runModelCheck(*makeCheckModel(log, v, AUV_RESOURCE_DIR));
+  nlohmann::json a = analysis::toJson(analysis::analyzeMission(log, v));
+  const nlohmann::json before = a["net_buoyancy_kg"];
+  mergeIntoAnalysisJson(a, r);
+  ASSERT_TRUE(a["missing_physics"].is_array());
+  ASSERT_EQ(a["missing_physics"].size(), 1u);
+  const nlohmann::json& mp = a["missing_physics"][0];
+  for (const char* key : {"id", "value", "unit", "sigma", "rms_before", "rms_after", "channel", "where"})
+    EXPECT_TRUE(mp.contains(key)) << key;
+  EXPECT_EQ(mp["id"], "hull_compressibility");
+  EXPECT_EQ(mp["unit"], "1/dbar");
+  EXPECT_TRUE(mp["value"].is_number());
+  EXPECT_TRUE(mp["where"].is_string());
+  EXPECT_LT(mp["rms_after"].get<double>(), mp["rms_before"].get<double>());
+  EXPECT_NEAR(a["net_buoyancy_kg"].get<double>(), r.net_buoyancy_kg, 1e-6);
+  EXPECT_EQ(a["model_check"]["analysis_estimate"]["net_buoyancy_kg"], before);
+  EXPECT_TRUE(a["cg_offset_mm"].is_object());
+  EXPECT_TRUE(a["model_check"]["rms"].is_array());
+  EXPECT_TRUE(a["model_check"]["localisation"].is_array());
+  EXPECT_TRUE(a["model_check"]["identifiability"].is_array());
+}
+
+}  // namespace
+}  // namespace auv::discrepancy
