@@ -2,6 +2,7 @@
 // and the estimated net buoyancy and CG offset (core/analysis). This file only
 // maps flags; every number comes from core.
 #include <filesystem>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
@@ -13,6 +14,7 @@
 #include "common/units.h"
 #include "missionlog/log_reader.h"
 #include "number_list.h"
+#include "planning/recommend_from_analysis.h"
 #include "vehicle/vehicle_catalog.h"
 
 namespace auv::cli {
@@ -58,10 +60,22 @@ int runAnalyze(const AnalyzeOpts& o) {
                            {"cells_blanked", readReport.cells_blanked},
                            {"summary", readReport.summary()}};
   }
-  if (!o.json.empty()) writeJson(analysis::toJson(r), o.json);
+  nlohmann::json report = analysis::toJson(r);
+  std::string why_not;
+  report["recommendation"] = recommendFromAnalysis(v, report, a.installed_kg, why_not);
+  if (report["recommendation"].is_null()) report["recommendation_unavailable"] = why_not;
+  if (!o.json.empty()) writeJson(report, o.json);
   if (o.json != "-") {
     if (!readReport.clean()) std::cout << readReport.summary() << "\n";
     std::cout << analysis::toText(r);
+    if (report["recommendation"].is_null()) {
+      std::cout << "No weight change recommended: " << why_not << "\n";
+    } else {
+      std::cout << "Recommended change for the next mission in the same water (see 'auvballast plan' for others):\n";
+      for (const auto& p : report["recommendation"]["points"]) {
+        std::printf("  %-18s %+6.2f kg\n", p.value("label", p.value("name", "")).c_str(), p.value("add_kg", 0.0));
+      }
+    }
   }
   return 0;
 }

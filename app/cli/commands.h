@@ -15,6 +15,12 @@ struct Command {
 Command addVehiclesCommand(CLI::App& app);
 Command addDensityCommand(CLI::App& app);
 Command addFirstMissionCommand(CLI::App& app);
+Command addSimulateCommand(CLI::App& app);
 Command addAnalyzeCommand(CLI::App& app);
+Command addPlanCommand(CLI::App& app);
+Command addHistoryCommand(CLI::App& app);
+Command addModelCheckCommand(CLI::App& app);
+// History database: the flag, else $AUVBALLAST_HISTORY, else $XDG_DATA_HOME/auvballast/history.sqlite.
+std::string historyPath(const std::string& flag);
 
 }  // namespace auv::cli

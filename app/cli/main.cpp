@@ -19,6 +19,10 @@ int main(int argc, char** argv) {
       auv::cli::addDensityCommand,
       auv::cli::addFirstMissionCommand,
       auv::cli::addAnalyzeCommand,
+      auv::cli::addPlanCommand,
+      auv::cli::addHistoryCommand,
+      auv::cli::addSimulateCommand,
+      auv::cli::addModelCheckCommand,
   };
   for (auto add : commands) {
     auto cmd = add(app);

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace auv::testing {
 
@@ -16,7 +17,10 @@ struct CliResult {
 };
 
 inline CliResult runCli(const std::string& args) {
-  const std::string errFile = ::testing::TempDir() + "cli_stderr.txt";
+  // One file per call: ctest runs several CLI tests in parallel processes.
+  static int calls = 0;
+  const std::string errFile =
+      ::testing::TempDir() + "cli_stderr_" + std::to_string(getpid()) + "_" + std::to_string(++calls) + ".txt";
   const std::string cmd = std::string(AUVBALLAST_EXE) + " " + args + " 2>" + errFile;
   CliResult r;
   FILE* p = popen(cmd.c_str(), "r");
@@ -30,6 +34,7 @@ inline CliResult runCli(const std::string& args) {
   std::stringstream ss;
   ss << e.rdbuf();
   r.err = ss.str();
+  std::remove(errFile.c_str());
   return r;
 }
 

@@ -1,6 +1,7 @@
 // Black-box tests of 'auvballast plan' and 'auvballast history': exit codes,
 // the JSON contract, the thesis's whole-system run (Fig. 7.9 / Table 7.2)
 // through the history, and the temperature staleness rule.
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -18,7 +19,7 @@ using testing::runCli;
 namespace {
 
 std::string tempPath(const std::string& name) {
-  const std::string p = ::testing::TempDir() + "plan_cli_" + name;
+  const std::string p = ::testing::TempDir() + std::to_string(::getpid()) + "_plan_cli_" + name;
   std::filesystem::remove(p);
   std::filesystem::remove(p + "-wal");
   std::filesystem::remove(p + "-shm");

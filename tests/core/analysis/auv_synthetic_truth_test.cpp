@@ -4,6 +4,8 @@
 // separate.
 #include <gtest/gtest.h>
 
+#include "vehicle/profile_loader.h"
+
 #include "analysis/mission_analysis.h"
 #include "auv_truth.h"
 #include "vehicle/vehicle_catalog.h"
@@ -169,7 +171,10 @@ TEST(AuvSyntheticTruth, ErrorsAndWaterWithIntervals) {
 }
 
 TEST(AuvSyntheticTruth, HuginHasNoHydrodynamicsButRollStillGivesY) {
-  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("hugin1000");
+  // By path: the profile as written, without the catalog's companion
+  // hydrodynamics (docs/decisions/profile-companion-hydrodynamics.md).
+  const VehicleProfile v = loadVehicleProfile(std::string(AUV_RESOURCE_DIR) + "/vehicles/hugin1000.json");
+  ASSERT_FALSE(v.sections.contains("hydrodynamics"));
   const VehicleProfile d = delphin2();
   AuvTruth t;  // a Delphin2-like log analysed as a HUGIN: only the roll part applies
   AnalysisOptions o;

@@ -4,6 +4,7 @@
 // refused naming the channel.
 #include "sim/replay.h"
 
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,7 +44,7 @@ Recorded record(const HuginSim& h, const WaterColumn& water, double interval) {
   SimOptions o;
   o.trace_interval_s = interval;
   r.trace = simulate(h.model(), h.autopilot(), water, r.scenario, o);
-  const std::string path = ::testing::TempDir() + "replay_test.csv";
+  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_replay_test.csv";
   writeSimulatedLog(r.trace, {"hugin1000", "plan", "", 1, 0, {}, {}}, path);
   r.log = readInterchangeCsv(path);
   return r;

@@ -4,6 +4,7 @@
 // forward), write the interchange CSV, read it back, analyse it with
 // core/analysis as `auvballast analyze` does, and recover the truth the
 // simulator wrote into the log's metadata.
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -43,7 +44,7 @@ RoundTrip roundTrip(std::uint64_t seed) {
   SimOptions opt = plan.options;
   opt.seed = seed;
   const SimTrace tr = simulate(v.model, v.autopilot, plan.water, resolveScenario(plan, profile), opt);
-  const std::string path = ::testing::TempDir() + "roundtrip_" + std::to_string(seed) + ".csv";
+  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_roundtrip_" + std::to_string(seed) + ".csv";
   writeSimulatedLog(tr, {"hugin1000", "plan", plan.file, seed, 0, plan.installed_kg, {}}, path);
   RoundTrip r;
   r.log = readInterchangeCsv(path);
@@ -67,8 +68,8 @@ TEST(SimAnalysisRoundTrip, HuginBallastErrorIsRecovered) {
     std::printf("seed %llu: net buoyancy %.3f +- %.3f kg (truth %.3f), CG x %.2f +- %.2f mm (truth %.2f)\n",
                 static_cast<unsigned long long>(seed), rep.net_buoyancy_kg.value, rep.net_buoyancy_kg.sigma, nb,
                 rep.cg_x_mm.value, rep.cg_x_mm.sigma, x);
-    EXPECT_NEAR(nb, 6.0, 0.1);  // ~3 kg from the kit at 50 m + the 3 kg error
-    EXPECT_NEAR(x, 4.93, 0.01);
+    EXPECT_NEAR(nb, 7.0, 0.1);  // ~4 kg from the 64.8 kg kit at 50 m + the 3 kg error
+    EXPECT_NEAR(x, 5.14, 0.01);
     EXPECT_NEAR(rep.net_buoyancy_kg.value, nb, 0.3);
     EXPECT_NEAR(rep.cg_x_mm.value, x, 2.0);
   }
@@ -85,7 +86,7 @@ TEST(SimAnalysisRoundTrip, GliderNetBuoyancyIsRecovered) {
     GliderScenario sc = resolveGliderScenario(plan, profile);
     sc.ballast_error.net_buoyancy_kg = error_kg;
     const SimTrace tr = simulateGlider(g, plan.water, sc, plan.options);
-    const std::string path = ::testing::TempDir() + "glider_roundtrip.csv";
+    const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_glider_roundtrip.csv";
     writeSimulatedLog(tr, {"slocum_g2", "plan", plan.file, 49, 0, {}, {}}, path);
     const MissionLog log = readInterchangeCsv(path);
     const analysis::AnalysisReport rep = analysis::analyzeMission(log, profile, {});

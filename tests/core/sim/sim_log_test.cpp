@@ -3,6 +3,7 @@
 // truth in the metadata, and the same seed writes the same file.
 #include "sim/sim_log.h"
 
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -52,7 +53,7 @@ TEST(SimLog, CsvReadsBackAsTheTraceInLogUnits) {
   ASSERT_EQ(tr.size(), 121u);
   SimLogInfo info{"hugin1000", "plan", "test.plan.json", 5, 0, testing::huginInstalledKg(), {}};
   const MissionLog log = toMissionLog(tr, info);
-  const std::string path = ::testing::TempDir() + "sim_log_test.csv";
+  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_sim_log_test.csv";
   writeInterchangeCsv(log, path);
   const MissionLog back = readInterchangeCsv(path);
 
