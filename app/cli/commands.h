@@ -17,6 +17,7 @@ Command addDensityCommand(CLI::App& app);
 Command addFirstMissionCommand(CLI::App& app);
 Command addSimulateCommand(CLI::App& app);
 Command addAnalyzeCommand(CLI::App& app);
+Command addConvertCommand(CLI::App& app);
 Command addPlanCommand(CLI::App& app);
 Command addHistoryCommand(CLI::App& app);
 Command addModelCheckCommand(CLI::App& app);

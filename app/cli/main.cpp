@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
       auv::cli::addDensityCommand,
       auv::cli::addFirstMissionCommand,
       auv::cli::addAnalyzeCommand,
+      auv::cli::addConvertCommand,
       auv::cli::addPlanCommand,
       auv::cli::addHistoryCommand,
       auv::cli::addSimulateCommand,

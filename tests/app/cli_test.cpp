@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -32,6 +33,21 @@ TEST(Cli, UnknownSubcommandIsExitCode2) {
   const auto r = runCli("fly-to-the-moon");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("auvballast:"), std::string::npos);
+}
+
+TEST(Cli, ConvertWritesInterchangeCsvThatReadsBack) {
+  // A Slocum ASCII fixture becomes interchange CSV with the same row count.
+  const std::string in = std::string(AUV_TEST_DATA_DIR) + "/missionlog/slocum_shallow.asc";
+  const std::string out = ::testing::TempDir() + std::to_string(::getpid()) + "_converted.csv";
+  const auto r = runCli("convert --log " + in + " --out " + out);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("rows"), std::string::npos);
+  const auto back = runCli("convert --log " + out + " --out " + out + ".2.csv");
+  ASSERT_EQ(back.code, 0) << back.err;
+  EXPECT_EQ(r.out.substr(r.out.find(": ") + 2, r.out.find(" rows") - r.out.find(": ") - 2),
+            back.out.substr(back.out.find(": ") + 2, back.out.find(" rows") - back.out.find(": ") - 2));
+  const auto bad = runCli("convert --log /nonexistent.csv --out " + out);
+  EXPECT_EQ(bad.code, 2);
 }
 
 }  // namespace auv
