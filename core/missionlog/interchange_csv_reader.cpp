@@ -22,6 +22,7 @@
 
 #include "common/input_error.h"
 #include "missionlog/decimal_parse.h"
+#include "missionlog/decimal_overflow.h"
 #include "missionlog/interchange_csv.h"
 #include "missionlog/iso8601.h"
 #include "missionlog/unit_conversion.h"
@@ -139,35 +140,6 @@ HeaderCell parseHeaderCell(std::string_view raw) {
   return h;
 }
 
-// Decimal order of magnitude of a numeric text that from_chars found out of
-// range: > 0 means overflow, otherwise it was a harmless underflow.
-bool overflows(std::string_view s) {
-  std::size_t i = 0;
-  if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
-  long intDigits = 0, leadingFracZeros = 0;
-  bool nonzero = false;
-  for (; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i)
-    if (s[i] != '0' || nonzero) {
-      nonzero = true;
-      ++intDigits;
-    }
-  if (i < s.size() && s[i] == '.')
-    for (++i; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i)
-      if (!nonzero) {
-        if (s[i] == '0') ++leadingFracZeros;
-        else nonzero = true;
-      }
-  long exponent = 0;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    long sign = 1;
-    if (i < s.size() && (s[i] == '-' || s[i] == '+')) sign = s[i++] == '-' ? -1 : 1;
-    for (; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i)
-      if (exponent < 100000000) exponent = exponent * 10 + (s[i] - '0');
-    exponent *= sign;
-  }
-  return (intDigits > 0 ? intDigits : -leadingFracZeros) + exponent > 0;
-}
 
 enum class CellStatus { kValue, kEmpty, kNotANumber, kTooLarge };
 
@@ -188,7 +160,7 @@ CellStatus parseCellSlow(std::string_view cell, double& v) {
   const auto r = std::from_chars(num.data(), end, v);
   if (r.ptr != end || r.ec == std::errc::invalid_argument) return CellStatus::kNotANumber;
   if (r.ec == std::errc::result_out_of_range) {
-    if (overflows(num)) return CellStatus::kTooLarge;
+    if (decimalOverflows(num)) return CellStatus::kTooLarge;
     v = num.front() == '-' ? -0.0 : 0.0;
     return CellStatus::kValue;
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "missionlog/decimal_overflow.h"
 #include "missionlog/decimal_parse.h"
 
 namespace auv {
@@ -20,35 +21,6 @@ bool iequals(std::string_view a, std::string_view b) {
   return true;
 }
 
-// For a numeric text from_chars found out of range: true when it overflowed
-// (the value is huge), false when it underflowed (the value is ~0).
-bool overflows(std::string_view s) {
-  std::size_t i = 0;
-  if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
-  long intDigits = 0, leadingFracZeros = 0;
-  bool nonzero = false;
-  for (; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i)
-    if (s[i] != '0' || nonzero) {
-      nonzero = true;
-      ++intDigits;
-    }
-  if (i < s.size() && s[i] == '.')
-    for (++i; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i)
-      if (!nonzero) {
-        if (s[i] == '0') ++leadingFracZeros;
-        else nonzero = true;
-      }
-  long exponent = 0;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    long sign = 1;
-    if (i < s.size() && (s[i] == '-' || s[i] == '+')) sign = s[i++] == '-' ? -1 : 1;
-    for (; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i)
-      if (exponent < 100000000) exponent = exponent * 10 + (s[i] - '0');
-    exponent *= sign;
-  }
-  return (intDigits > 0 ? intDigits : -leadingFracZeros) + exponent > 0;
-}
 
 }  // namespace
 
@@ -108,7 +80,7 @@ CellValue parseNumberCell(std::string_view cell, bool decimalComma, double& v) {
   if (r.ptr != end || r.ec == std::errc::invalid_argument) return CellValue::kBad;
   if (r.ec == std::errc::result_out_of_range) {
     const bool negative = cell.front() == '-';
-    v = overflows(cell) ? (negative ? -1.0 : 1.0) * std::numeric_limits<double>::infinity() : (negative ? -0.0 : 0.0);
+    v = decimalOverflows(cell) ? (negative ? -1.0 : 1.0) * std::numeric_limits<double>::infinity() : (negative ? -0.0 : 0.0);
     return CellValue::kNumber;
   }
   return std::isnan(v) ? CellValue::kEmpty : CellValue::kNumber;
