@@ -31,5 +31,8 @@ for i in "${!TARGETS[@]}"; do
   # New inputs go to a scratch corpus so the committed seeds stay small.
   "$exe" -max_total_time="$SECONDS_PER_TARGET" -timeout=10 -rss_limit_mb=2048 \
     -max_len=65536 -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ \
-    "$work" "${CORPORA[$i]}"
+    "$work" "${CORPORA[$i]}" > "build-fuzz/$t.log" 2>&1 || {
+      echo "fuzz.sh: $t FAILED; last lines of build-fuzz/$t.log:"; tail -n 60 "build-fuzz/$t.log"; exit 1; }
+  # The full libFuzzer log stays in build-fuzz/; print the run's totals.
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "build-fuzz/$t.log" | sed "s/^/  $t /"
 done
