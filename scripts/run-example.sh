@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs the main job on bundled example data:
 #  1. HUGIN 1000 first mission from a crane weighing (resources/examples/hugin1000_first_mission.json),
-#  2. Slocum G2 first mission from the report's tank session (resources/examples/slocum_tank_weighing.json).
+#  2. Slocum G2 first mission from the report's tank session (resources/examples/slocum_tank_weighing.json),
+#  3. post mission: a simulated HUGIN mission with a known ballast error, analysed (recommendation included),
+#  4. model check of a shipped glider log whose hull compressibility the model lacks.
 # JSON reports are written to ./example-output/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,4 +18,12 @@ echo; echo "== HUGIN 1000, same weighing with the optional 0.5 kg piece"
 $exe first-mission --weighing resources/examples/hugin1000_first_mission.json --optional-pieces
 echo; echo "== Slocum G2, first mission (tank weighing, Baird 2007 App. B)"
 $exe first-mission --weighing resources/examples/slocum_tank_weighing.json --json "$out/slocum_g2_first_mission.json"
+echo; echo "== HUGIN 1000, post mission: simulate a mission with a known ballast error (truth in the log header), then analyse it"
+$exe simulate --vehicle hugin1000 --plan resources/examples/hugin1000_ballast_error.plan.json --out "$out/hugin1000_mission.csv"
+grep -E "^# truth_(net_buoyancy_kg|cg_x_mm)" "$out/hugin1000_mission.csv"
+$exe analyze --vehicle hugin1000 --log "$out/hugin1000_mission.csv" --installed 7.2,7.2,25.2,25.2 --bg-mm 20 \
+    --json "$out/hugin1000_analysis.json"
+echo; echo "== Slocum G2, model check of a log with concealed hull compressibility"
+$exe model-check --vehicle slocum_g2 --log resources/examples/slocum_g2_model-check_compressibility.csv \
+    --json "$out/slocum_g2_model_check.json"
 echo; echo "JSON reports in $out/"
