@@ -204,6 +204,10 @@ LmResult levenbergMarquardt(const Problem& p, double nb, double Cd0, int max_ite
 
 }  // namespace
 
+double steadyAngleOfAttackNear(const GliderFlightConstants& c, double phi_abs_rad, double Cd0, double start) {
+  return newtonAlphaAbs(c.lift_slope_per_rad, c.induced_drag_per_rad2, Cd0, phi_abs_rad, start);
+}
+
 double steadyAngleOfAttack(const GliderFlightConstants& c, double pitch_rad, double Cd0) {
   const double th = correctedPitch(c, pitch_rad);
   return std::copysign(solveAlphaAbs(c.lift_slope_per_rad, c.induced_drag_per_rad2, Cd0, std::abs(th)), th);

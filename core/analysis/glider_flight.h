@@ -51,6 +51,9 @@ struct ReferenceState {
 
 // Angle of attack (rad, same sign as the pitch) for a pitch (rad) and Cd0.
 double steadyAngleOfAttack(const GliderFlightConstants& c, double pitch_rad, double Cd0);
+// |alpha| for a glide path |phi| (> 0) by Newton from `start`, a root at a
+// nearby angle (continuation along a table); bracketing fallback.
+double steadyAngleOfAttackNear(const GliderFlightConstants& c, double phi_abs_rad, double Cd0, double start);
 
 // Model vertical speed (up positive) for net buoyancy nb_kg at `ref`; 0 when
 // the net force cannot drive a glide in the pitched direction.

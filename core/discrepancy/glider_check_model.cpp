@@ -20,25 +20,6 @@ constexpr double kStep = 0.05 * std::numbers::pi / 180.0;
 constexpr double kLo = 0.5 * std::numbers::pi / 180.0;
 constexpr double kHi = 85.0 * std::numbers::pi / 180.0;
 
-// Smallest root of a x tan(x + phi) = Cd0 + Cd1 x^2 by Newton from a nearby
-// root; the analysis's bracketing solver when Newton leaves the interval.
-double newtonAlpha(const analysis::GliderFlightConstants& c, double Cd0, double phi, double start) {
-  const double a = c.lift_slope_per_rad, Cd1 = c.induced_drag_per_rad2;
-  const double top = 0.5 * std::numbers::pi - phi;
-  double x = start;
-  for (int i = 0; i < 30; ++i) {
-    const double tn = std::tan(x + phi);
-    const double h = a * x * tn - Cd0 - Cd1 * x * x;
-    const double dh = a * tn + a * x * (1.0 + tn * tn) - 2.0 * Cd1 * x;
-    if (!(dh > 0.0)) break;
-    const double nx = x - h / dh;
-    if (!(nx > 0.0 && nx < top)) break;
-    if (std::abs(nx - x) < 1e-14) return nx;
-    x = nx;
-  }
-  return analysis::steadyAngleOfAttack(c, phi, Cd0);
-}
-
 }  // namespace
 
 // alpha(|theta|) tabulated per Cd0; the fits evaluate thousands of samples
@@ -56,7 +37,7 @@ class GliderCheckModel::AlphaCache {
     const auto n = static_cast<std::size_t>((kHi - kLo) / kStep) + 2;
     std::vector<double> a(n);
     a[0] = analysis::steadyAngleOfAttack(c_, kLo, Cd0);
-    for (std::size_t i = 1; i < n; ++i) a[i] = newtonAlpha(c_, Cd0, kLo + static_cast<double>(i) * kStep, a[i - 1]);
+    for (std::size_t i = 1; i < n; ++i) a[i] = analysis::steadyAngleOfAttackNear(c_, kLo + static_cast<double>(i) * kStep, Cd0, a[i - 1]);
     entries_.emplace_back(Cd0, std::move(a));
     return entries_.back().second;
   }

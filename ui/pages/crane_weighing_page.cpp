@@ -10,25 +10,10 @@
 
 #include "common/input_error.h"
 #include "weighing/crane_weighing.h"
+#include "widgets/inputs.h"
 #include "wizard/operator_wizard.h"
 
 namespace auv::ui {
-namespace {
-
-QDoubleSpinBox* spin(const QString& name, double lo, double hi, int decimals, const QString& suffix,
-                     const QString& tip) {
-  auto* s = new QDoubleSpinBox;
-  s->setObjectName(name);
-  s->setRange(lo, hi);
-  s->setDecimals(decimals);
-  s->setSuffix(suffix);
-  s->setToolTip(tip);
-  s->setMinimumHeight(32);  // gloves on a dockside laptop
-  s->setKeyboardTracking(true);
-  return s;
-}
-
-}  // namespace
 
 CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   setTitle(tr("Weighing with crane scales"));
@@ -41,11 +26,11 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   auto* sf = new QFormLayout(scalesBox);
   for (int i = 0; i < 4; ++i) {
     scales_[static_cast<std::size_t>(i)] =
-        spin(ids[i], 0, 5000, 1, " kg",
+        makeSpin(ids[i], 0, 5000, 1, " kg",
              tr("Reading of the crane scale at this rope end, in kg, with the vehicle hanging still."));
     sf->addRow(names[i], scales_[static_cast<std::size_t>(i)]);
   }
-  total_ = spin("total", 0, 10000, 1, " kg", tr("Reading of the scale on the crane hook (the whole vehicle)."));
+  total_ = makeSpin("total", 0, 10000, 1, " kg", tr("Reading of the scale on the crane hook (the whole vehicle)."));
   sf->addRow(tr("&Hook (total):"), total_);
   sum_check_ = new QLabel;
   sum_check_->setObjectName("sum_check");
@@ -53,10 +38,10 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
 
   auto* ropeBox = new QGroupBox(tr("Rope positions"));
   auto* rf = new QFormLayout(ropeBox);
-  rope_fore_ = spin("rope_fore", -20, 20, 4, " m",
+  rope_fore_ = makeSpin("rope_fore", -20, 20, 4, " m",
                     tr("x of the fore rope from the vehicle origin, forward positive (measure along the hull)."));
-  rope_aft_ = spin("rope_aft", -20, 20, 4, " m", tr("x of the aft rope from the vehicle origin, forward positive."));
-  rope_y_ = spin("rope_y", 0.01, 5, 3, " m", tr("Half the lateral distance between the two ends of one rope."));
+  rope_aft_ = makeSpin("rope_aft", -20, 20, 4, " m", tr("x of the aft rope from the vehicle origin, forward positive."));
+  rope_y_ = makeSpin("rope_y", 0.01, 5, 3, " m", tr("Half the lateral distance between the two ends of one rope."));
   rf->addRow(tr("&Fore rope x:"), rope_fore_);
   rf->addRow(tr("&Aft rope x:"), rope_aft_);
   rf->addRow(tr("Rope end &y (±):"), rope_y_);
@@ -65,7 +50,7 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   auto* inf = new QFormLayout(instBox);
   for (int i = 0; i < 4; ++i) {
     installed_[static_cast<std::size_t>(i)] =
-        spin(QString("installed_%1").arg(i), 0, 200, 1, " kg", tr("Kit pieces already in this point, in kg."));
+        makeSpin(QString("installed_%1").arg(i), 0, 200, 1, " kg", tr("Kit pieces already in this point, in kg."));
     inf->addRow(names[i], installed_[static_cast<std::size_t>(i)]);
   }
   error_ = new QLabel;

@@ -16,6 +16,7 @@
 #include "firstmission/slocum_first_mission.h"
 #include "weighing/slocum_layout.h"
 #include "widgets/inputs.h"
+#include "wizard/json_number.h"
 #include "wizard/operator_wizard.h"
 
 namespace auv::ui {
@@ -24,15 +25,6 @@ namespace {
 const char* const kBottleLabels[4] = {
     QT_TRANSLATE_NOOP("auv::ui::RollTestPage", "Bow, port:"), QT_TRANSLATE_NOOP("auv::ui::RollTestPage", "Bow, starboard:"),
     QT_TRANSLATE_NOOP("auv::ui::RollTestPage", "Aft, upper:"), QT_TRANSLATE_NOOP("auv::ui::RollTestPage", "Aft, lower:")};
-
-double jnum(const nlohmann::json& j, std::initializer_list<const char*> path) {
-  const nlohmann::json* p = &j;
-  for (const char* k : path) {
-    if (!p->is_object() || !p->contains(k)) return 0.0;
-    p = &(*p)[k];
-  }
-  return p->is_number() ? p->get<double>() : 0.0;
-}
 
 }  // namespace
 

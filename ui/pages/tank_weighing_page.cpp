@@ -12,6 +12,7 @@
 #include "firstmission/slocum_first_mission.h"
 #include "weighing/tank_weighing_file.h"
 #include "widgets/inputs.h"
+#include "wizard/json_number.h"
 #include "wizard/operator_wizard.h"
 
 namespace auv::ui {
@@ -26,15 +27,6 @@ const char* const kItemLabels[kSlocumItemCount] = {
     QT_TRANSLATE_NOOP("auv::ui::TankWeighingPage", "Wing rail, p&ort:"),
     QT_TRANSLATE_NOOP("auv::ui::TankWeighingPage", "Wing rail, s&tarboard:"),
 };
-
-double jnum(const nlohmann::json& j, std::initializer_list<const char*> path) {
-  const nlohmann::json* p = &j;
-  for (const char* k : path) {
-    if (!p->is_object() || !p->contains(k)) return 0.0;
-    p = &(*p)[k];
-  }
-  return p->is_number() ? p->get<double>() : 0.0;
-}
 
 }  // namespace
 

@@ -8,21 +8,11 @@
 
 #include "common/input_error.h"
 #include "firstmission/water_conditions.h"
+#include "widgets/inputs.h"
 #include "wizard/operator_wizard.h"
 
 namespace auv::ui {
 namespace {
-
-QDoubleSpinBox* spin(const char* name, double lo, double hi, int decimals, const QString& suffix, const QString& tip) {
-  auto* s = new QDoubleSpinBox;
-  s->setObjectName(name);
-  s->setRange(lo, hi);
-  s->setDecimals(decimals);
-  s->setSuffix(suffix);
-  s->setToolTip(tip);
-  s->setMinimumHeight(32);
-  return s;
-}
 
 struct WaterType {
   const char* name;
@@ -41,7 +31,7 @@ constexpr WaterType kWaterTypes[] = {
 WaterPage::WaterPage(WizardState& state) : state_(state) {
   setTitle(tr("Mission water"));
   setSubTitle(tr("Where will the vehicle fly? Density includes pressure at the operating depth."));
-  temperature_ = spin("temperature", -2, 40, 2, " °C",
+  temperature_ = makeSpin("temperature", -2, 40, 2, " °C",
                       tr("Water temperature at the operating depth if you know it (CTD cast), else at the surface."));
   water_type_ = new QComboBox;
   water_type_->setObjectName("water_type");
@@ -49,9 +39,9 @@ WaterPage::WaterPage(WizardState& state) : state_(state) {
   for (const auto& t : kWaterTypes) water_type_->addItem(tr(t.name), t.salinity_psu);
   water_type_->setToolTip(tr("Pick a water type if you have no salinity measurement (thesis Table 2.1)."));
   water_type_->setMinimumHeight(32);
-  salinity_ = spin("salinity", 0, 42, 2, " PSU", tr("Practical salinity of the mission water."));
-  depth_ = spin("depth", 0, 6000, 1, " m", tr("Depth where the vehicle spends most of the mission."));
-  latitude_ = spin("latitude", -90, 90, 1, " °", tr("Latitude of the area (gravity for depth to pressure)."));
+  salinity_ = makeSpin("salinity", 0, 42, 2, " PSU", tr("Practical salinity of the mission water."));
+  depth_ = makeSpin("depth", 0, 6000, 1, " m", tr("Depth where the vehicle spends most of the mission."));
+  latitude_ = makeSpin("latitude", -90, 90, 1, " °", tr("Latitude of the area (gravity for depth to pressure)."));
   density_ = new QLabel;
   density_->setObjectName("density");
   error_ = new QLabel;
