@@ -19,7 +19,8 @@ class HelpDialog;
 //   start (history, mode) -> vehicle ->
 //     first mission, AUV:    crane weighing -> water -> result
 //     first mission, glider: tank weighing -> roll test -> result
-//     post mission:          log import -> deviation plots
+//     post mission:          log import -> deviation plots -> model check -> pre mission
+//     pre mission:           pre mission (next water, policy) -> adjustment -> summary
 // Finish saves the session to the history in one transaction.
 class OperatorWizard : public QWizard {
   Q_OBJECT
@@ -33,7 +34,11 @@ class OperatorWizard : public QWizard {
     kRollTest,
     kFirstMissionResult,
     kLogImport,
-    kDeviationPlots
+    kDeviationPlots,
+    kModelCheck,
+    kPreMission,
+    kAdjustment,
+    kSummary
   };
 
   explicit OperatorWizard(WizardState state, QWidget* parent = nullptr);

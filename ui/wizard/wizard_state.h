@@ -6,19 +6,21 @@
 #include <optional>
 #include <string>
 
+#include "analysis/analysis_report.h"
+#include "discrepancy/model_check.h"
 #include "firstmission/first_mission_report.h"
 #include "firstmission/hugin_first_mission.h"
 #include "missionlog/mission_log.h"
 #include "missionlog/read_report.h"
+#include "planning/pre_mission_plan.h"
 #include "vehicle/vehicle_profile.h"
 #include "weighing/tank_weighing.h"
 
 namespace auv::ui {
 
 // The thesis sequence: weigh before the first mission, analyse a recorded
-// mission afterwards, plan the next one. Pre-mission planning needs the
-// analysis pages, which are not in the wizard yet.
-enum class SessionMode { kFirstMission, kPostMission };
+// mission afterwards, plan the next one.
+enum class SessionMode { kFirstMission, kPostMission, kPreMission };
 
 struct WizardState {
   std::string resource_dir;
@@ -45,6 +47,22 @@ struct WizardState {
   std::shared_ptr<const MissionLog> log;
   std::optional<ReadReport> log_report;
   std::string log_format;
+
+  // Post mission: core/analysis on the imported log (installed pieces during
+  // that mission, profile order), and the model check with the terms the
+  // technician accepted (names of MissingPhysics entries).
+  std::vector<double> mission_installed_kg;
+  std::optional<analysis::AnalysisReport> analysis;
+  std::optional<discrepancy::ModelCheckResult> model_check;
+  std::vector<std::string> accepted_terms;
+
+  // Pre mission: the next mission's water and policy, the plan, what the
+  // technician ticked off and what was actually installed (saved to history).
+  std::optional<PlannedWater> next_water;
+  PlanPolicy policy = PlanPolicy::Exact;
+  std::optional<PreMissionPlan> plan;
+  std::vector<bool> checklist_done;
+  std::vector<double> actually_installed_kg;
 
   std::optional<FirstMissionReport> report;
   std::string last_error;
