@@ -52,6 +52,13 @@ nlohmann::json toJson(const AnalysisReport& r) {
   j["cg_offset_sigma_mm"] = {{"x", r.cg_x_mm.known ? num(r.cg_x_mm.sigma) : nullptr},
                              {"y", r.cg_y_mm.known ? num(r.cg_y_mm.sigma) : nullptr}};
   if (!r.cg_y_basis.empty()) j["cg_offset_y_basis"] = r.cg_y_basis;
+  if (r.cruise_roll_deg.known) {
+    j["cruise"] = {{"prop_rpm", num(r.cruise_rpm)},
+                   {"roll_deg", num(r.cruise_roll_deg.value)},
+                   {"roll_sigma_deg", num(r.cruise_roll_deg.sigma)},
+                   {"cg_y_mm", r.cruise_cg_y_mm.known ? num(r.cruise_cg_y_mm.value) : nullptr},
+                   {"cg_y_sigma_mm", r.cruise_cg_y_mm.known ? num(r.cruise_cg_y_mm.sigma) : nullptr}};
+  }
   if (r.vehicle_kind == "glider") {
     j["mass_to_add_g"] = r.mass_to_add_g.known ? num(r.mass_to_add_g.value) : nullptr;
     j["mass_to_add_sigma_g"] = r.mass_to_add_g.known ? num(r.mass_to_add_g.sigma) : nullptr;
@@ -130,6 +137,17 @@ std::string toText(const AnalysisReport& r) {
   est("CG - CB x", r.cg_x_mm, "%+.1f", "mm");
   est("CG - CB y", r.cg_y_mm, "%+.1f", "mm");
   if (r.cg_y_mm.known && !r.cg_y_basis.empty()) o << "    (y basis: " << r.cg_y_basis << ")\n";
+  if (r.cruise_roll_deg.known) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "  roll at cruise (%.0f rpm): %+.3f +- %.3f deg", r.cruise_rpm, r.cruise_roll_deg.value,
+                  r.cruise_roll_deg.sigma);
+    o << buf;
+    if (r.cruise_cg_y_mm.known) {
+      std::snprintf(buf, sizeof buf, "; levels at CG y %+.3f +- %.3f mm", r.cruise_cg_y_mm.value, r.cruise_cg_y_mm.sigma);
+      o << buf;
+    }
+    o << "\n";
+  }
   if (r.vehicle_kind == "glider") {
     if (r.mass_to_add_g.known)
       o << "  ballast to add for neutral at " << fmt("%.2f", r.target_density_kgm3) << " kg/m3: "

@@ -34,6 +34,10 @@ struct SegmentReport {
   double pitch_deg = std::numeric_limits<double>::quiet_NaN();
   double pitch_error_deg = std::numeric_limits<double>::quiet_NaN();
   double roll_deg = std::numeric_limits<double>::quiet_NaN();
+  // 95 % half-widths of the three means above (statistics.h, per segment).
+  double depth_error_ci95_m = std::numeric_limits<double>::quiet_NaN();
+  double pitch_error_ci95_deg = std::numeric_limits<double>::quiet_NaN();
+  double roll_ci95_deg = std::numeric_limits<double>::quiet_NaN();
   double speed_mps = std::numeric_limits<double>::quiet_NaN();
   double prop_rpm = std::numeric_limits<double>::quiet_NaN();
   double elevator_deg = std::numeric_limits<double>::quiet_NaN();
@@ -49,6 +53,11 @@ struct AnalysisReport {
   EstimatedValue net_buoyancy_kg;  // positive = too light
   EstimatedValue cg_x_mm, cg_y_mm;  // CG - CB
   std::string cg_y_basis;
+  // Roll at the cruise propeller speed and the CG y that levels the vehicle
+  // there (propeller torque included): what the planner zeroes (thesis
+  // §5.3.3 judges roll at 160 rpm, not at rest).
+  double cruise_rpm = std::numeric_limits<double>::quiet_NaN();
+  EstimatedValue cruise_roll_deg, cruise_cg_y_mm;
   // Gliders: signed grams to add for neutral buoyancy at target_density_kgm3.
   EstimatedValue mass_to_add_g;
   double target_density_kgm3 = std::numeric_limits<double>::quiet_NaN();

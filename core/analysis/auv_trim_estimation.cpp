@@ -179,6 +179,22 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     if (dof > 0) cov *= std::max(1.0, (A * p - b).squaredNorm() / dof);
     out.roll_static_deg = units::radToDeg(std::atan(p(0)));
     out.roll_static_sigma_deg = units::radToDeg(std::sqrt(cov(0, 0)) / (1.0 + p(0) * p(0)));
+    // Roll at cruise measured directly on the segments at the highest rpm
+    // (thesis §5.3.3 reads roll where the propeller turns at 160 rpm): no
+    // torque law between, so its error does not reach the plan.
+    double rpm_max = 0.0;
+    for (const auto* g : s) rpm_max = std::max(rpm_max, g->prop_rpm.mean);
+    double sw = 0.0, swx = 0.0;
+    for (const auto* g : s) {
+      if (g->prop_rpm.mean < 0.98 * rpm_max) continue;
+      const double w = 1.0 / (rollSe(g) * rollSe(g));
+      sw += w;
+      swx += w * g->roll_deg.mean;
+    }
+    out.cruise_known = true;
+    out.cruise_rpm = rpm_max;
+    out.cruise_roll_deg = swx / sw;
+    out.cruise_roll_sigma_deg = std::sqrt(1.0 / sw);
     out.y_basis = "static (propeller torque fitted over " + std::to_string(s.size()) + " segments at different rpm)";
   } else {
     MeanAccumulator acc;  // segment means as blocks of one: scatter between segments counts
@@ -192,11 +208,19 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
       acc.endBlock();
     }
     out.roll_static_deg = swx / sw;
+    double rpm_max = 0.0;
+    if (have_rpm)
+      for (const auto* g : s) rpm_max = std::max(rpm_max, g->prop_rpm.mean);
+    out.cruise_rpm = rpm_max;
     const MeanEstimate between = acc.result();
     out.roll_static_sigma_deg = std::max(std::sqrt(sw_se2) / sw, s.size() >= 3 ? between.sd / std::sqrt(static_cast<double>(s.size())) : 0.0);
     bool all_stopped = have_rpm;
     if (have_rpm)
       for (const auto* g : s) all_stopped = all_stopped && std::abs(g->prop_rpm.mean) < 1.0;
+    // One propeller speed (or none recorded): the mean roll is the cruise roll.
+    out.cruise_known = !all_stopped;
+    out.cruise_roll_deg = out.roll_static_deg;
+    out.cruise_roll_sigma_deg = out.roll_static_sigma_deg;
     if (!ctx.log_has_rpm) {
       out.y_basis = "static_assumed";
       out.warnings.push_back("the log has no prop_rpm channel: CG y assumes the roll at cruise is static; any propeller reaction torque is included in it");
@@ -218,10 +242,17 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     return;
   }
   const double bg = *ctx.bg_measured_m;
-  const double t = std::tan(units::degToRad(out.roll_static_deg));
-  out.y_m = bg * t;
-  out.y_sigma_m = std::abs(bg) * (1.0 + t * t) * units::degToRad(out.roll_static_sigma_deg);
+  auto yOf = [bg](double roll_deg, double sigma_deg, double& y, double& y_sigma) {
+    const double t = std::tan(units::degToRad(roll_deg));
+    y = bg * t;
+    y_sigma = std::abs(bg) * (1.0 + t * t) * units::degToRad(sigma_deg);
+  };
+  yOf(out.roll_static_deg, out.roll_static_sigma_deg, out.y_m, out.y_sigma_m);
   out.y_identified = true;
+  if (out.cruise_known) {
+    yOf(out.cruise_roll_deg, out.cruise_roll_sigma_deg, out.y_cruise_m, out.y_cruise_sigma_m);
+    out.y_cruise_identified = true;
+  }
 }
 
 }  // namespace

@@ -43,6 +43,14 @@ struct AuvTrimEstimate {
   std::string y_basis;  // "static", "static (propeller torque fitted)", "cruise_equivalent", "static_assumed"
   double roll_static_deg = 0.0, roll_static_sigma_deg = 0.0;
   bool roll_static_known = false;
+  // Roll at the cruise propeller speed (the highest steady rpm), the
+  // thesis's roll criterion (§5.3.3: zero at 160 rpm), and the CG y that
+  // would give that roll at rest: zeroing it levels the vehicle in cruise,
+  // propeller torque included. From the torque fit where there is one, so
+  // the fit's own bias cancels when the plan zeroes it.
+  bool cruise_known = false, y_cruise_identified = false;
+  double cruise_rpm = 0.0, cruise_roll_deg = 0.0, cruise_roll_sigma_deg = 0.0;
+  double y_cruise_m = 0.0, y_cruise_sigma_m = 0.0;
   bool elevator_bias_fitted = false;
   double elevator_bias_deg = 0.0, elevator_bias_sigma_deg = 0.0;
   double chi2_per_dof = 0.0;

@@ -338,6 +338,12 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     rep.cg_y_mm = {e.y_identified, e.y_identified ? units::mToMm(e.y_m) : kNaN,
                    e.y_identified ? units::mToMm(e.y_sigma_m) : kNaN, e.y_why};
     rep.cg_y_basis = e.y_basis;
+    if (e.cruise_known) {
+      rep.cruise_rpm = e.cruise_rpm;
+      rep.cruise_roll_deg = {true, e.cruise_roll_deg, e.cruise_roll_sigma_deg, ""};
+      rep.cruise_cg_y_mm = {e.y_cruise_identified, e.y_cruise_identified ? units::mToMm(e.y_cruise_m) : kNaN,
+                            e.y_cruise_identified ? units::mToMm(e.y_cruise_sigma_m) : kNaN, e.y_why};
+    }
     segNb = e.segment_net_buoyancy_kg;
     segX = e.segment_x_m;
     for (const auto& n : e.notes) rep.notes.push_back(n);
@@ -516,6 +522,9 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     s.pitch_deg = pitch.at(w).mean;
     s.pitch_error_deg = pErr.at(w).mean;
     s.roll_deg = roll.at(w).mean;
+    s.depth_error_ci95_m = dErr.at(w).ci95;
+    s.pitch_error_ci95_deg = pErr.at(w).ci95;
+    s.roll_ci95_deg = roll.at(w).ci95;
     s.speed_mps = speed.at(w).mean;
     s.prop_rpm = rpm.at(w).mean;
     s.elevator_deg = elev.at(w).mean;

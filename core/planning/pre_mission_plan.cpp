@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "ballast/ballast_solver.h"
 #include "ballast/mass_quanta.h"
@@ -278,6 +279,14 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     if (r.net_after_kg < out.margin_kg - 1e-6) out.safe = false;
   }
   explainPlan(v, pr, out);
+  if (in.estimate.cg_y_basis == "cruise" && in.estimate.cg_y_m) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "roll is planned and predicted at cruise (%.0f rpm, propeller torque included): the side balance "
+                  "that levels the vehicle there, as the thesis judges roll (§5.3.3)",
+                  in.estimate.cruise_rpm);
+    out.notes.emplace_back(buf);
+  }
   return out;
 }
 

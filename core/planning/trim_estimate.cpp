@@ -43,6 +43,15 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
       e.cg_y_m = units::mmToM(*y);
       if (sg) e.cg_y_sigma_m = units::mmToM(optionalNumber(*sg, "y").value_or(0.0));
     }
+    if (root.has("cruise") && root.node()["cruise"].is_object()) {
+      const JsonReader cr = root.child("cruise");
+      if (auto yc = optionalNumber(cr, "cg_y_mm")) {
+        e.cg_y_m = units::mmToM(*yc);
+        e.cg_y_sigma_m = units::mmToM(optionalNumber(cr, "cg_y_sigma_mm").value_or(0.0));
+        e.cg_y_basis = "cruise";
+        e.cruise_rpm = optionalNumber(cr, "prop_rpm").value_or(0.0);
+      }
+    }
     if (e.cg_x_sigma_m < 0.0 || e.cg_y_sigma_m < 0.0) {
       root.fail("cg_offset_sigma_mm", "sigmas must be >= 0", "write 1-sigma values in mm");
     }

@@ -16,6 +16,11 @@ struct TrimEstimate {
   double net_buoyancy_kg = 0.0;        // B - W at `water`, positive = too light
   double net_buoyancy_sigma_kg = 0.0;  // 1 sigma
   std::optional<double> cg_x_m, cg_y_m;  // CG - CB, body axes; nullopt = not identified
+  // Where cg_y_m comes from: "static" (the CG itself) or "cruise" (the CG
+  // that would give the roll seen at cruise: propeller torque included, so
+  // zeroing it levels the vehicle at cruise rpm, thesis §5.3.3).
+  std::string cg_y_basis = "static";
+  double cruise_rpm = 0.0;
   double cg_x_sigma_m = 0.0, cg_y_sigma_m = 0.0;
   WaterState water;                    // in situ where net buoyancy was identified
   double salinity_psu = 35.0;
@@ -32,7 +37,8 @@ struct TrimEstimate {
 // depth_m}). A null CG component is "not identified"; a null net buoyancy or
 // water throws InputError naming the field, since nothing can be planned
 // without them. Missing pressure is derived from depth, missing density
-// from T, S and pressure (EOS-80).
+// from T, S and pressure (EOS-80). When the report has cruise.cg_y_mm, CG y
+// is that cruise-equivalent value (cg_y_basis "cruise").
 TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::string& file);
 
 }  // namespace auv

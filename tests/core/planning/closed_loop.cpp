@@ -129,7 +129,13 @@ void Harness::apply(Truth& t, const PreMissionPlan& p) const {
 }
 
 Harness::Best Harness::best(const Truth& t0, const PlannedWater& w, bool optional_pieces) const {
-  // The exact plan made with perfect knowledge of the truth in that water.
+  Truth t = t0;
+  apply(t, perfectPlan(t0, w, optional_pieces));
+  const MissionResult m = fly(t, w);
+  return {m.static_pitch_deg, m.static_roll_deg};
+}
+
+PreMissionPlan Harness::perfectPlan(const Truth& t0, const PlannedWater& w, bool optional_pieces) const {
   TrimEstimate e;
   const ResolvedPoint op = resolvePoint(v_.hull, w);
   e.net_buoyancy_kg = op.displaced_kg - t0.mass_kg;
@@ -145,11 +151,7 @@ Harness::Best Harness::best(const Truth& t0, const PlannedWater& w, bool optiona
   in.next.temperature_sigma_degC = 0.0;
   in.next.salinity_sigma_psu = 0.0;
   in.use_optional_pieces = optional_pieces;
-  const PreMissionPlan p = planPreMission(v_, in);
-  Truth t = t0;
-  apply(t, p);
-  const MissionResult m = fly(t, w);
-  return {m.static_pitch_deg, m.static_roll_deg};
+  return planPreMission(v_, in);
 }
 
 Outcome Harness::runOnce(const LoopCase& c, PlanPolicy policy, bool optional_pieces, double k) const {

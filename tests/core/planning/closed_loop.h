@@ -97,6 +97,8 @@ class Harness {
     double pitch_deg = 0.0, roll_deg = 0.0;
   };
   Best best(const Truth& t, const PlannedWater& w, bool optional_pieces) const;
+  // The exact plan made with perfect knowledge of the truth in that water.
+  PreMissionPlan perfectPlan(const Truth& t, const PlannedWater& w, bool optional_pieces) const;
   void apply(Truth& t, const PreMissionPlan& p) const;
 
  private:

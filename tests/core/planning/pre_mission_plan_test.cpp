@@ -296,6 +296,32 @@ TEST(TrimEstimateFromReport, ReadsTheAnalysisContract) {
   }
 }
 
+TEST(TrimEstimateFromReport, PlansRollOnTheCruiseEquivalentCgY) {
+  // A static CG y of +0.5 mm, but the propeller torque rolls the vehicle
+  // so that it flies as if y were -0.8 mm: the plan levels it at cruise.
+  const nlohmann::json r = nlohmann::json::parse(R"({
+    "net_buoyancy_kg": 2.5, "net_buoyancy_sigma_kg": 0.2,
+    "cg_offset_mm": {"x": 0.0, "y": 0.5}, "cg_offset_sigma_mm": {"x": 0.3, "y": 0.01},
+    "cruise": {"prop_rpm": 160, "roll_deg": -2.3, "roll_sigma_deg": 0.01, "cg_y_mm": -0.8, "cg_y_sigma_mm": 0.004},
+    "water": {"temperature_degC": 6.5, "salinity_psu": 34.5, "pressure_dbar": 50.0, "depth_m": 49.6}
+  })");
+  const TrimEstimate e = trimEstimateFromReport(r, "a.json");
+  ASSERT_TRUE(e.cg_y_m.has_value());
+  EXPECT_DOUBLE_EQ(*e.cg_y_m, -0.0008);
+  EXPECT_DOUBLE_EQ(e.cg_y_sigma_m, 0.000004);
+  EXPECT_EQ(e.cg_y_basis, "cruise");
+  PreMissionInput in = baseInput();
+  in.estimate.cg_y_m = e.cg_y_m;
+  in.estimate.cg_y_basis = e.cg_y_basis;
+  in.estimate.cruise_rpm = e.cruise_rpm;
+  const PreMissionPlan p = planPreMission(hugin(), in);
+  EXPECT_TRUE(anyContains(p.notes, "roll is planned and predicted at cruise (160 rpm"));
+  // More weight goes to starboard than to port: the CG moves to +y.
+  double moment_y = 0.0;
+  for (std::size_t i = 0; i < p.points.size(); ++i) moment_y += p.points[i].add_kg * hugin().points[i].position_m.y();
+  EXPECT_GT(moment_y, 0.0);
+}
+
 TEST(PreMissionPlan, UnidentifiedCgIsAssumedAtCbWithAWarning) {
   PreMissionInput in = baseInput();
   in.estimate.cg_x_m.reset();

@@ -17,48 +17,70 @@ constexpr std::uint64_t kSeed = 2026;
 
 struct Rates {
   int all = 0, net = 0, pitch = 0, roll = 0, depth = 0, safe = 0, n = 0;
-  int reachable = 0, all_reachable = 0;  // cases whose pitch band the kit can reach at all
+  int reachable = 0, all_reachable = 0;  // cases whose static pitch band the kit can reach at all
+  int static_pitch = 0;                  // static pitch (at rest) within the band, for the record
 };
 
-Rates run(const SimHarness& h, const char* label) {
+Rates run(const SimHarness& h, const char* label, bool show_misses = false) {
   Rates r;
   for (const SimLoopCase& c : makeSimCases(kCases, kSeed)) {
     const SimOutcome o = h.runOnce(c, PlanPolicy::Exact, true);
     r.all += o.spec.all(), r.net += o.spec.net, r.pitch += o.spec.pitch, r.roll += o.spec.roll;
     r.depth += o.spec.depth, r.safe += o.safe, ++r.n;
     r.reachable += o.reachable, r.all_reachable += o.reachable && o.spec.all();
+    r.static_pitch += std::abs(o.after.pitch_deg) <= h.vehicle().spec.pitch_tolerance_deg;
+    if (show_misses && !o.spec.all()) {
+      std::printf("    miss: light %.2f kg, x %+.1f mm, y %+.2f mm -> net %.3f kg (est. sigma %.3f), flight pitch %+.2f deg, "
+                  "(best %+.2f), cruise roll %+.3f deg (best %+.3f), depth %+.3f m\n",
+                  c.light_kg, c.x_mm, c.y_mm, o.after.net_kg, o.before.report.value("net_buoyancy_sigma_kg", 0.0),
+                  o.after.flight_pitch_deg, o.best_pitch_deg, o.after.cruise_roll_deg, o.best_roll_deg, o.after.depth_error_m);
+      std::printf("      before: net %.3f est %.3f; planned net %.3f, static pitch %+.2f (after %+.2f), roll %+.3f\n",
+                  o.before.net_kg, o.before.report.value("net_buoyancy_kg", 0.0), o.predicted_net_kg,
+                  o.predicted_pitch_deg, o.after.pitch_deg, o.predicted_roll_deg);
+      for (const auto& w : o.warnings) std::printf("      warning: %s\n", w.c_str());
+    }
   }
-  std::printf("  [sim, exact+0.5kg, %s] spec %d, net %d, pitch %d, roll %d, depth %d, safe %d of %d; "
-              "spec %d of the %d whose pitch band the kit can reach\n",
-              label, r.all, r.net, r.pitch, r.roll, r.depth, r.safe, r.n, r.all_reachable, r.reachable);
+  std::printf("  [sim, exact+0.5kg, %s] spec %d, net %d, flight pitch %d, cruise roll %d, depth %d, safe %d of %d "
+              "(static pitch at rest in band: %d)\n",
+              label, r.all, r.net, r.pitch, r.roll, r.depth, r.safe, r.n, r.static_pitch);
   return r;
 }
 
 }  // namespace
 
-TEST(SimClosedLoop, WithTheAnalysisOwnSigmaTheMoveIsSafeButAboveTheBand) {
-  // The analysis states 0.5-1.7 kg for net buoyancy on these logs (10 %
-  // hydrodynamic-coefficient uncertainty); its estimates are far better than
-  // that, but the plan must trust the stated sigma: the 95 % margin lifts
-  // the target above 1.2 kg.
-  const SimHarness h;
-  const Rates r = run(h, "analysis sigma");
+TEST(SimClosedLoop, OneIterationMeetsTheSpecWhenTheCoefficientsAreKnown) {
+  // The target (>= 90 % after ONE move). The simulator flies exactly
+  // the profile's hydrodynamic derivatives, so the analysis is told they are
+  // known to 2 % (as after a tow-tank or model-check calibration); every
+  // other sigma is the analysis's own. Pitch and roll are judged in flight
+  // as the thesis measures them: pitch at steady depth, roll at cruise rpm.
+  const SimHarness h({}, 0.02);
+  const Rates r = run(h, "coefficients known to 2 %", true);
   EXPECT_EQ(r.safe, r.n);
-  EXPECT_EQ(r.depth, r.n);   // the depth loop integrates: the depth error is ~0
-  EXPECT_LT(r.net, r.n / 2);  // documented: the stated sigma, not the planner, decides
+  EXPECT_EQ(r.depth, r.n);
+  EXPECT_GE(r.all, (9 * r.n + 9) / 10);
 }
 
-TEST(SimClosedLoop, WithACalibratedSigmaNetBuoyancyLandsInBand) {
-  // The same estimates with 0.1 kg / 0.1 mm sigmas (their actual error on
-  // these logs): net buoyancy and depth meet the spec; pitch (+-0.17 mm of
-  // CG x at BG 20 mm) and roll (the analysis's CG y is ~0.06 mm off here,
-  // 0.17 deg) do not in every case.
+TEST(SimClosedLoop, WithTenPercentCoefficientUncertaintyTheMoveStaysSafeAboveTheBand) {
+  // With the default 10 % the analysis states 0.3-1.2 kg for net buoyancy
+  // (a systematic error proportional to the lift carrying it: one move from
+  // 8 kg light cannot promise a 1.2 kg band). The plan honours the stated
+  // sigma: always safe, but the margin often lifts it above 1.2 kg.
+  const SimHarness h;
+  const Rates r = run(h, "coefficients known to 10 %");
+  EXPECT_EQ(r.safe, r.n);
+  EXPECT_EQ(r.depth, r.n);
+  EXPECT_LT(r.net, r.n);
+  EXPECT_GE(r.pitch, (9 * r.n + 9) / 10);
+}
+
+TEST(SimClosedLoop, ACalibratedSigmaOverrideBehavesLikeKnownCoefficients) {
+  // The planner alone: the analysis's estimates with 0.1 kg / 0.1 mm sigmas.
   const SimHarness h(SigmaOverride{0.1, 0.1, std::nullopt});
-  const Rates r = run(h, "calibrated sigma");
+  const Rates r = run(h, "sigma override 0.1 kg, 0.1 mm");
   EXPECT_EQ(r.safe, r.n);
   EXPECT_GE(r.net, 9 * r.n / 10);
-  EXPECT_GE(r.depth, 9 * r.n / 10);
-  EXPECT_GT(r.all, 0);
+  EXPECT_GE(r.all, 9 * r.n / 10);
 }
 
 TEST(SimClosedLoop, ClassicTableInTheSameLoop) {
@@ -75,4 +97,27 @@ TEST(SimClosedLoop, ClassicTableInTheSameLoop) {
   }
   std::printf("  [sim, classic] spec within 8 missions in %d of %zu, after one in %d\n", reached, cases.size(), one);
   EXPECT_EQ(one, 0);
+}
+
+TEST(SimClosedLoop, TheCruiseEquivalentCgYLevelsTheVehicleAtCruise) {
+  // The analysis's cruise.cg_y_mm is the CG y that gives the cruise roll at
+  // rest (propeller torque included). Moving the true CG by minus that value
+  // must level the vehicle at cruise rpm, and leave it rolled at rest by
+  // the torque's share: the thesis's "a little heavier on port" (§5.3.3).
+  const SimHarness h({}, 0.02);
+  SimLoopCase c = makeSimCases(1, kSeed).front();
+  c.light_kg = 0.6;
+  c.x_mm = 0.0;
+  c.y_mm = 1.0;
+  c.water2 = c.water1;
+  const SimMission first = h.fly(c, c.installed_kg, c.water1, c.seed);
+  const double y_cruise = first.report.at("cruise").at("cg_y_mm").get<double>();
+  ASSERT_GT(std::abs(first.cruise_roll_deg), 1.0);  // the torque rolls it several degrees
+  SimLoopCase levelled = c;
+  levelled.y_mm = c.y_mm - y_cruise;
+  const SimMission second = h.fly(levelled, c.installed_kg, c.water1, c.seed + 1);
+  // 0.03 deg: under a third of the roll band; the residual (~0.7 % of the
+  // torque roll) is the flight condition shifting a little with the trim.
+  EXPECT_NEAR(second.cruise_roll_deg, 0.0, 0.03);
+  EXPECT_NEAR(second.roll_deg, -(first.cruise_roll_deg - first.roll_deg), 0.05);  // static roll = minus the torque's
 }
