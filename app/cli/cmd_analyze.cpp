@@ -21,7 +21,7 @@ namespace auv::cli {
 namespace {
 
 struct AnalyzeOpts {
-  std::string vehicle, log, installed, bg_mm, target_density, json;
+  std::string vehicle, log, installed, bg_mm, target_density, coefficient_sigma, json;
   bool no_classic = false;
 };
 
@@ -45,6 +45,13 @@ int runAnalyze(const AnalyzeOpts& o) {
     if (!(rho > 900.0 && rho < 1100.0))
       throw InputError("target-density", "must be a seawater density (900..1100 kg/m3)", "e.g. --target-density 1026.5");
     a.target_density_kgm3 = rho;
+  }
+  if (!o.coefficient_sigma.empty()) {
+    const double r = parseNumber(o.coefficient_sigma, "coefficient-sigma",
+                                 "the 1-sigma relative uncertainty of the profile's hydrodynamic derivatives");
+    if (!(r >= 0.0 && r <= 1.0))
+      throw InputError("coefficient-sigma", "must be a fraction between 0 and 1", "e.g. --coefficient-sigma 0.02 for derivatives known to 2 %");
+    a.coefficient_rel_sigma = r;
   }
   a.classic = !o.no_classic;
 
@@ -94,6 +101,9 @@ Command addAnalyzeCommand(CLI::App& app) {
                   "CG below CB from an inclining/roll test, mm: turns the static roll into a CG y offset");
   cmd->add_option("--target-density", o->target_density,
                   "Gliders: water density for the ballast-to-add figure, kg/m3 (default: the log's mean below 10 m)");
+  cmd->add_option("--coefficient-sigma", o->coefficient_sigma,
+                  "AUVs: 1-sigma relative uncertainty of the profile's hydrodynamic derivatives (default 0.10; "
+                  "0.02 once calibrated, e.g. by tow tank or model check); it dominates the net-buoyancy sigma");
   cmd->add_flag("--no-classic", o->no_classic, "Skip the thesis's App. D checks (reported under details.classic)");
   cmd->add_option("--json", o->json, "Write the JSON report here ('-' = stdout instead of text)");
   return {cmd, [o]() { return runAnalyze(*o); }};

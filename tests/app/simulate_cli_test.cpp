@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -125,6 +126,21 @@ TEST(SimulateCli, SimulateThenAnalyzeRecoversTheBallastError) {
   const MissionLog truth = readInterchangeCsv(log);
   EXPECT_NEAR(j["net_buoyancy_kg"].get<double>(), meta(truth, "truth_net_buoyancy_mean_kg"), 0.3);
   EXPECT_NEAR(j["cg_offset_mm"]["x"].get<double>(), meta(truth, "truth_cg_x_mm"), 2.0);
+  // The stated sigma follows the coefficient uncertainty (it dominates);
+  // the estimate itself does not move.
+  const auto c = runCli("analyze --vehicle " + profile_path + " --log " + log +
+                        " --installed 7.2,7.2,25.2,25.2 --bg-mm 20 --coefficient-sigma 0.02 --json -");
+  ASSERT_EQ(c.code, 0) << c.err;
+  const nlohmann::json k = nlohmann::json::parse(c.out);
+  EXPECT_DOUBLE_EQ(k["net_buoyancy_kg"].get<double>(), j["net_buoyancy_kg"].get<double>());
+  EXPECT_LT(k["net_buoyancy_sigma_kg"].get<double>(), 0.5 * j["net_buoyancy_sigma_kg"].get<double>());
+  // Roll at cruise (160 rpm) and the CG y that levels the vehicle there.
+  EXPECT_GT(k["cruise"]["prop_rpm"].get<double>(), 150.0);
+  const double roll = k["cruise"]["roll_deg"].get<double>();
+  EXPECT_NEAR(k["cruise"]["cg_y_mm"].get<double>(), 20.0 * std::tan(roll * std::numbers::pi / 180.0), 1e-6);
+  const auto bad = runCli("analyze --vehicle " + profile_path + " --log " + log + " --coefficient-sigma 10%");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("coefficient-sigma"), std::string::npos) << bad.err;
 }
 
 TEST(SimulateCli, GliderPlanWritesGliderChannels) {
