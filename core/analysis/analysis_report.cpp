@@ -54,6 +54,7 @@ nlohmann::json toJson(const AnalysisReport& r) {
   if (!r.cg_y_basis.empty()) j["cg_offset_y_basis"] = r.cg_y_basis;
   if (r.cruise_roll_deg.known) {
     j["cruise"] = {{"prop_rpm", num(r.cruise_rpm)},
+                   {"speed_mps", num(r.cruise_speed_mps)},
                    {"roll_deg", num(r.cruise_roll_deg.value)},
                    {"roll_sigma_deg", num(r.cruise_roll_deg.sigma)},
                    {"cg_y_mm", r.cruise_cg_y_mm.known ? num(r.cruise_cg_y_mm.value) : nullptr},

@@ -57,6 +57,7 @@ struct AnalysisReport {
   // there (propeller torque included): what the planner zeroes (thesis
   // §5.3.3 judges roll at 160 rpm, not at rest).
   double cruise_rpm = std::numeric_limits<double>::quiet_NaN();
+  double cruise_speed_mps = std::numeric_limits<double>::quiet_NaN();
   EstimatedValue cruise_roll_deg, cruise_cg_y_mm;
   // Gliders: signed grams to add for neutral buoyancy at target_density_kgm3.
   EstimatedValue mass_to_add_g;

@@ -184,13 +184,15 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     // torque law between, so its error does not reach the plan.
     double rpm_max = 0.0;
     for (const auto* g : s) rpm_max = std::max(rpm_max, g->prop_rpm.mean);
-    double sw = 0.0, swx = 0.0;
+    double sw = 0.0, swx = 0.0, su = 0.0, swu = 0.0;
     for (const auto* g : s) {
       if (g->prop_rpm.mean < 0.98 * rpm_max) continue;
       const double w = 1.0 / (rollSe(g) * rollSe(g));
       sw += w;
       swx += w * g->roll_deg.mean;
+      if (g->speed_mps.valid()) su += g->end_s - g->start_s, swu += (g->end_s - g->start_s) * g->speed_mps.mean;
     }
+    if (su > 0.0) out.cruise_speed_mps = swu / su;
     out.cruise_known = true;
     out.cruise_rpm = rpm_max;
     out.cruise_roll_deg = swx / sw;
@@ -217,6 +219,10 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     bool all_stopped = have_rpm;
     if (have_rpm)
       for (const auto* g : s) all_stopped = all_stopped && std::abs(g->prop_rpm.mean) < 1.0;
+    double su = 0.0, swu = 0.0;
+    for (const auto* g : s)
+      if (g->speed_mps.valid()) su += g->end_s - g->start_s, swu += (g->end_s - g->start_s) * g->speed_mps.mean;
+    if (su > 0.0) out.cruise_speed_mps = swu / su;
     // One propeller speed (or none recorded): the mean roll is the cruise roll.
     out.cruise_known = !all_stopped;
     out.cruise_roll_deg = out.roll_static_deg;

@@ -7,6 +7,7 @@
 // with the propeller reaction torque (proportional to rpm^2) separated when
 // the log has several propeller speeds. Whatever the log cannot separate is
 // reported as not identifiable with the reason, never guessed.
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -50,6 +51,7 @@ struct AuvTrimEstimate {
   // the fit's own bias cancels when the plan zeroes it.
   bool cruise_known = false, y_cruise_identified = false;
   double cruise_rpm = 0.0, cruise_roll_deg = 0.0, cruise_roll_sigma_deg = 0.0;
+  double cruise_speed_mps = std::numeric_limits<double>::quiet_NaN();
   double y_cruise_m = 0.0, y_cruise_sigma_m = 0.0;
   bool elevator_bias_fitted = false;
   double elevator_bias_deg = 0.0, elevator_bias_sigma_deg = 0.0;

@@ -340,6 +340,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     rep.cg_y_basis = e.y_basis;
     if (e.cruise_known) {
       rep.cruise_rpm = e.cruise_rpm;
+      rep.cruise_speed_mps = e.cruise_speed_mps;
       rep.cruise_roll_deg = {true, e.cruise_roll_deg, e.cruise_roll_sigma_deg, ""};
       rep.cruise_cg_y_mm = {e.y_cruise_identified, e.y_cruise_identified ? units::mToMm(e.y_cruise_m) : kNaN,
                             e.y_cruise_identified ? units::mToMm(e.y_cruise_sigma_m) : kNaN, e.y_why};

@@ -45,7 +45,9 @@ nlohmann::json toJson(const PreMissionPlan& p) {
       {"pitch_sigma_deg", r6(p.pitch_sigma_deg)},
       {"roll_deg", r6(p.predicted.roll_deg)},
       {"roll_sigma_deg", r6(p.roll_sigma_deg)},
-      {"in_band", {{"net_buoyancy", p.buoyancy_in_band}, {"pitch", p.pitch_in_band}, {"roll", p.roll_in_band}}}};
+      {"in_band", {{"net_buoyancy", p.buoyancy_in_band}, {"pitch", p.pitch_in_band}, {"roll", p.roll_in_band}}},
+      {"flight_pitch_deg", p.flight_pitch_after_deg ? nlohmann::json(r6(*p.flight_pitch_after_deg)) : nlohmann::json(nullptr)},
+      {"flight_speed_mps", p.flight_speed_mps > 0.0 ? nlohmann::json(r6(p.flight_speed_mps)) : nlohmann::json(nullptr)}};
   nlohmann::json j;
   j["vehicle"] = p.vehicle_id;
   j["mode"] = "pre-mission";
@@ -53,7 +55,9 @@ nlohmann::json toJson(const PreMissionPlan& p) {
   j["recommendation"] = {{"policy", toString(p.policy)}, {"points", points}, {"predicted", predicted}};
   j["predicted"] = predicted;
   j["before"] = {{"net_buoyancy_kg", r6(p.net_before_kg)}, {"pitch_deg", r6(p.pitch_before_deg)},
-                 {"roll_deg", r6(p.roll_before_deg)}};
+                 {"roll_deg", r6(p.roll_before_deg)},
+                 {"flight_pitch_deg", p.flight_pitch_before_deg ? nlohmann::json(r6(*p.flight_pitch_before_deg))
+                                                                : nlohmann::json(nullptr)}};
   nlohmann::json at = nlohmann::json::array();
   for (const auto& r : p.at_points) {
     at.push_back({{"role", r.role}, {"water", waterJson(r.water, r.state)}, {"displaced_kg", r6(r.displaced_kg)},
@@ -91,6 +95,10 @@ std::string toText(const PreMissionPlan& p) {
     << fmt("%.2f", p.net_sigma_kg) << " kg, pitch " << fmt("%+.2f", p.predicted.pitch_deg) << " +- "
     << fmt("%.2f", p.pitch_sigma_deg) << " deg, roll " << fmt("%+.2f", p.predicted.roll_deg) << " +- "
     << fmt("%.2f", p.roll_sigma_deg) << " deg\n";
+  if (p.flight_pitch_before_deg && p.flight_pitch_after_deg) {
+    o << "Pitch in level flight at " << fmt("%.2f", p.flight_speed_mps) << " m/s: " << fmt("%+.2f", *p.flight_pitch_before_deg)
+      << " deg now, " << fmt("%+.2f", *p.flight_pitch_after_deg) << " deg after the move\n";
+  }
   o << "Safety (margin " << fmt("%.2f", p.margin_kg) << " kg):";
   for (const auto& r : p.at_points) {
     o << " " << r.role << " " << fmt("%+.2f", r.net_after_kg) << " kg;";

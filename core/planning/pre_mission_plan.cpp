@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/level_flight.h"
 #include "ballast/ballast_solver.h"
 #include "ballast/mass_quanta.h"
 #include "ballast/solution_text.h"
@@ -110,6 +111,29 @@ void attitudeSigmas(const BallastProblem& pr, const std::vector<std::vector<int>
   add(0.0, Eigen::Vector3d(0, e.cg_y_sigma_m, 0));
   out.pitch_sigma_deg = std::sqrt(vp);
   out.roll_sigma_deg = std::sqrt(vr);
+}
+
+// The pitch the vehicle flies at the last mission's cruise speed, before
+// and after the move, at the operating point.
+void predictFlightPitch(const VehicleProfile& v, const TrimEstimate& e, const EstimatedVehicle& ev,
+                        const BallastSolution& sol, PreMissionPlan& out) {
+  if (!(e.cruise_speed_mps > 0.0)) return;
+  std::string why;
+  const auto c = analysis::steadyHydroFromProfile(v, why);
+  if (!c) return;
+  const PlannedPointResult& op = out.at_points.front();
+  auto fly = [&](double mass_kg, const Eigen::Vector3d& cg) -> std::optional<double> {
+    const analysis::LevelFlight f = analysis::solveLevelFlight(
+        *c, {units::g0 * mass_kg, units::g0 * op.displaced_kg, cg.x() - v.cb_m.x(), cg.z() - v.cb_m.z(),
+             e.cruise_speed_mps, op.state.density_kgm3, 0.0});
+    if (!f.ok) return std::nullopt;
+    return units::radToDeg(f.pitch_rad);
+  };
+  out.flight_speed_mps = e.cruise_speed_mps;
+  out.flight_pitch_before_deg = fly(ev.mass.mass_kg, ev.mass.cg_m);
+  double added = 0.0;
+  for (const auto& p : out.points) added += p.add_kg;
+  out.flight_pitch_after_deg = fly(ev.mass.mass_kg + added, sol.cg_m);
 }
 
 std::vector<std::vector<int>> classicMove(const VehicleProfile& v, const PreMissionInput& in, const BallastProblem& pr,
@@ -278,6 +302,7 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     r.net_after_kg = r.displaced_kg - out.vehicle.mass.mass_kg - added;
     if (r.net_after_kg < out.margin_kg - 1e-6) out.safe = false;
   }
+  predictFlightPitch(v, in.estimate, out.vehicle, sol, out);
   explainPlan(v, pr, out);
   if (in.estimate.cg_y_basis == "cruise" && in.estimate.cg_y_m) {
     char buf[200];

@@ -67,6 +67,11 @@ struct PreMissionPlan {
   double net_before_kg = 0.0, pitch_before_deg = 0.0, roll_before_deg = 0.0;  // at the operating point
   PredictedTrim predicted;      // at the operating point
   double net_sigma_kg = 0.0, pitch_sigma_deg = 0.0, roll_sigma_deg = 0.0;
+  // Pitch in level flight at the last mission's cruise speed (thesis §5.3.2
+  // judges it there), before and after the move; unset without the
+  // profile's hydrodynamics or a cruise speed (analysis/level_flight.h).
+  std::optional<double> flight_pitch_before_deg, flight_pitch_after_deg;
+  double flight_speed_mps = 0.0;
   double margin_kg = 0.0;       // k * sigma_net
   double band_lo_kg = 0.0, band_hi_kg = 0.0;  // net buoyancy band asked of the solver at the operating point
   std::vector<PlannedPointResult> at_points;  // operating first

@@ -45,6 +45,7 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
     }
     if (root.has("cruise") && root.node()["cruise"].is_object()) {
       const JsonReader cr = root.child("cruise");
+      e.cruise_speed_mps = optionalNumber(cr, "speed_mps").value_or(0.0);
       if (auto yc = optionalNumber(cr, "cg_y_mm")) {
         e.cg_y_m = units::mmToM(*yc);
         e.cg_y_sigma_m = units::mmToM(optionalNumber(cr, "cg_y_sigma_mm").value_or(0.0));

@@ -21,6 +21,7 @@ struct TrimEstimate {
   // zeroing it levels the vehicle at cruise rpm, thesis §5.3.3).
   std::string cg_y_basis = "static";
   double cruise_rpm = 0.0;
+  double cruise_speed_mps = 0.0;  // 0 = unknown (no flying-pitch prediction)
   double cg_x_sigma_m = 0.0, cg_y_sigma_m = 0.0;
   WaterState water;                    // in situ where net buoyancy was identified
   double salinity_psu = 35.0;

@@ -108,6 +108,13 @@ SimMission SimHarness::fly(const SimLoopCase& c, const std::vector<double>& inst
   m.roll_deg = units::radToDeg(st.roll_rad);
   m.flight_pitch_deg = rep.pitch_at_steady_depth_deg.mean;
   m.cruise_roll_deg = rep.cruise_roll_deg.value;
+  double sw = 0.0, swp = 0.0;
+  for (const auto& s : rep.segments) {
+    if (!s.used || !(s.prop_rpm >= 0.98 * rep.cruise_rpm)) continue;
+    sw += s.end_s - s.start_s;
+    swp += (s.end_s - s.start_s) * s.pitch_deg;
+  }
+  m.cruise_pitch_deg = sw > 0.0 ? swp / sw : std::nan("");
   m.depth_error_m = rep.depth_error_m.mean;
   m.depth_error_ci95_m = rep.depth_error_m.ci95;
   return m;
@@ -156,7 +163,7 @@ SimOutcome SimHarness::runOnce(const SimLoopCase& c, PlanPolicy policy, bool opt
   in.next.salinity_sigma_psu = 0.05;
   in.policy = policy;
   in.use_optional_pieces = optional_pieces;
-  const PreMissionPlan p = planPreMission(analytic_.vehicle(), in);
+  const PreMissionPlan p = planPreMission(profile_, in);
   std::vector<double> after = c.installed_kg;
   for (std::size_t i = 0; i < after.size(); ++i) after[i] = std::round((after[i] + p.points[i].add_kg) * 1e4) / 1e4;
   const Harness::Best b = analytic_.best(o.before.truth, c.water2, optional_pieces);
@@ -167,6 +174,7 @@ SimOutcome SimHarness::runOnce(const SimLoopCase& c, PlanPolicy policy, bool opt
   o.predicted_net_kg = p.predicted.net_buoyancy_kg;
   o.predicted_pitch_deg = p.predicted.pitch_deg;
   o.predicted_roll_deg = p.predicted.roll_deg;
+  o.predicted_flight_pitch_deg = p.flight_pitch_after_deg;
   o.warnings = p.warnings;
   o.after = fly(c, after, c.water2, c.seed + 1);
   o.spec = judge(o.after, best_flown);
@@ -186,7 +194,7 @@ std::optional<int> SimHarness::classicMissions(const SimLoopCase& c, int max_mis
     in.estimate = trimEstimateFromReport(m.report, "closed-loop analysis");
     in.next = nextMissionWater(c.water2, 0.0, "operator");
     in.policy = PlanPolicy::Classic;
-    const PreMissionPlan p = planPreMission(analytic_.vehicle(), in);
+    const PreMissionPlan p = planPreMission(profile_, in);
     for (std::size_t i = 0; i < installed.size(); ++i) {
       installed[i] = std::round((installed[i] + p.points[i].add_kg) * 1e4) / 1e4;
     }

@@ -37,6 +37,7 @@ struct SimMission {
   double pitch_deg = 0.0, roll_deg = 0.0;  // truth, static attitude in that water
   double flight_pitch_deg = 0.0;  // the analysis's pitch at steady depth (thesis §5.3.2, depth check)
   double cruise_roll_deg = 0.0;   // the analysis's roll at cruise rpm (thesis §5.3.3)
+  double cruise_pitch_deg = 0.0;  // mean pitch of the analysis's steady segments at cruise rpm
   double depth_error_m = 0.0, depth_error_ci95_m = 0.0;  // the analysis's, commanded - measured
   nlohmann::json report;         // the analysis's JSON report
   Truth truth;
@@ -49,6 +50,7 @@ struct SimOutcome {
   double best_roll_deg = 0.0, best_pitch_deg = 0.0;  // in flight after the perfect-knowledge plan
   bool reachable = false;      // that plan meets the static pitch band (for the record)
   double predicted_net_kg = 0.0, predicted_pitch_deg = 0.0, predicted_roll_deg = 0.0;
+  std::optional<double> predicted_flight_pitch_deg;  // the plan's, at the last mission's cruise speed
   std::vector<std::string> warnings;  // the plan's
 };
 

@@ -3,6 +3,8 @@
 // printed rates are those in docs/decisions/planning-closed-loop.md.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "sim_loop.h"
@@ -19,6 +21,8 @@ struct Rates {
   int all = 0, net = 0, pitch = 0, roll = 0, depth = 0, safe = 0, n = 0;
   int reachable = 0, all_reachable = 0;  // cases whose static pitch band the kit can reach at all
   int static_pitch = 0;                  // static pitch (at rest) within the band, for the record
+  int flight_predicted = 0;              // plans that predicted the flying pitch
+  double flight_error_max = 0.0;         // |predicted - flown| flying pitch, deg
 };
 
 Rates run(const SimHarness& h, const char* label, bool show_misses = false) {
@@ -29,6 +33,10 @@ Rates run(const SimHarness& h, const char* label, bool show_misses = false) {
     r.depth += o.spec.depth, r.safe += o.safe, ++r.n;
     r.reachable += o.reachable, r.all_reachable += o.reachable && o.spec.all();
     r.static_pitch += std::abs(o.after.pitch_deg) <= h.vehicle().spec.pitch_tolerance_deg;
+    if (o.predicted_flight_pitch_deg) {
+      ++r.flight_predicted;
+      r.flight_error_max = std::max(r.flight_error_max, std::abs(*o.predicted_flight_pitch_deg - o.after.cruise_pitch_deg));
+    }
     if (show_misses && !o.spec.all()) {
       std::printf("    miss: light %.2f kg, x %+.1f mm, y %+.2f mm -> net %.3f kg (est. sigma %.3f), flight pitch %+.2f deg, "
                   "(best %+.2f), cruise roll %+.3f deg (best %+.3f), depth %+.3f m\n",
@@ -41,8 +49,9 @@ Rates run(const SimHarness& h, const char* label, bool show_misses = false) {
     }
   }
   std::printf("  [sim, exact+0.5kg, %s] spec %d, net %d, flight pitch %d, cruise roll %d, depth %d, safe %d of %d "
-              "(static pitch at rest in band: %d)\n",
-              label, r.all, r.net, r.pitch, r.roll, r.depth, r.safe, r.n, r.static_pitch);
+              "(static pitch at rest in band: %d; flying pitch predicted in %d, worst error %.2f deg)\n",
+              label, r.all, r.net, r.pitch, r.roll, r.depth, r.safe, r.n, r.static_pitch, r.flight_predicted,
+              r.flight_error_max);
   return r;
 }
 
@@ -57,6 +66,10 @@ TEST(SimClosedLoop, OneIterationMeetsTheSpecWhenTheCoefficientsAreKnown) {
   const SimHarness h({}, 0.02);
   const Rates r = run(h, "coefficients known to 2 %", true);
   EXPECT_EQ(r.safe, r.n);
+  // The plan's flying pitch (analysis/level_flight.h at the last mission's
+  // cruise speed) against the pitch the next mission flies at cruise rpm.
+  EXPECT_EQ(r.flight_predicted, r.n);
+  EXPECT_LT(r.flight_error_max, 0.1);
   EXPECT_EQ(r.depth, r.n);
   EXPECT_GE(r.all, (9 * r.n + 9) / 10);
 }
