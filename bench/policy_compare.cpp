@@ -107,6 +107,18 @@ int main(int argc, char** argv) {
     std::printf("%-27s %6d %6d %6d %6d %6d %6d %d\n", s.name, all, net, pitch, roll, depth, safe, static_pitch);
   }
   {
+    // What a technician with uncalibrated coefficients sees: a second move,
+    // planned from the first move's mission, when the vehicle is near neutral.
+    const SimHarness h({}, 0.10);
+    int all = 0, net = 0, pitch = 0, roll = 0, depth = 0, safe = 0;
+    for (const auto& c : makeSimCases(sim_count, seed)) {
+      const SimOutcome o = h.runTwice(c, true);
+      all += o.spec.all(), net += o.spec.net, pitch += o.spec.pitch, roll += o.spec.roll, depth += o.spec.depth;
+      safe += o.safe;
+    }
+    std::printf("%-27s %6d %6d %6d %6d %6d %6d\n", "10 %, after TWO moves", all, net, pitch, roll, depth, safe);
+  }
+  {
     const SimHarness h;
     int reached = 0;
     const int n = std::min(sim_count, 10);

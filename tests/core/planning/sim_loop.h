@@ -71,10 +71,16 @@ class SimHarness {
   // The simulator's ballast error that makes mission 1 the case's truth.
   sim::BallastError errorOf(const SimLoopCase& c) const;
   SimOutcome runOnce(const SimLoopCase& c, PlanPolicy policy, bool optional_pieces) const;
+  // Exact policy twice (mission 1 -> move -> mission 2 -> move -> mission 3,
+  // judged); `before` is mission 1, `after` mission 3.
+  SimOutcome runTwice(const SimLoopCase& c, bool optional_pieces) const;
   std::optional<int> classicMissions(const SimLoopCase& c, int max_missions) const;
   const VehicleProfile& vehicle() const { return profile_; }
 
  private:
+  PreMissionPlan plan(const SimMission& m, const std::vector<double>& installed, const PlannedWater& next,
+                      PlanPolicy policy, bool optional_pieces) const;
+  static std::vector<double> applied(const std::vector<double>& installed, const PreMissionPlan& p);
   SpecCheck judge(const SimMission& m, const SimMission& best) const;
   SimMission flyBest(const SimLoopCase& c, const SimMission& m, const PlannedWater& w, bool optional_pieces) const;
   VehicleProfile profile_;  // with the simulator's hydrodynamics as sections, for the analysis
