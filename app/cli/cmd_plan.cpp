@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <iostream>
 #include <memory>
 
@@ -19,8 +18,8 @@
 #include "history/store.h"
 #include "history/transaction.h"
 #include "number_list.h"
+#include "planning/plan_sources.h"
 #include "planning/pre_mission_plan.h"
-#include "seawater/seawater.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/vehicle_catalog.h"
 
@@ -63,43 +62,9 @@ std::vector<double> installedFromHistory(HistoryStore& store, const std::string&
   return kg;
 }
 
-std::optional<double> number(const nlohmann::json& j, const char* k) {
-  if (j.contains(k) && j[k].is_number()) return j[k].get<double>();
-  return std::nullopt;
-}
-
-// An analysis without a physical estimate (e.g. imported from a thesis
-// ballasting file) still carries the deviations the classic table reads;
-// the mass then comes from the recorded total weight, as in the thesis.
-TrimEstimate deviationsOnlyEstimate(HistoryStore* store, const std::string& config, const Sources& s) {
-  const nlohmann::json& r = s.report;
-  TrimEstimate e;
-  const nlohmann::json errors = r.contains("errors") && r["errors"].is_object() ? r["errors"] : nlohmann::json::object();
-  e.depth_error_m = number(errors, "depth_m") ? number(errors, "depth_m") : number(r, kDepthDeviationKey);
-  e.pitch_error_deg = number(errors, "pitch_deg") ? number(errors, "pitch_deg") : number(r, kPitchDeviationKey);
-  e.roll_deg = number(errors, "roll_deg") ? number(errors, "roll_deg") : number(r, kRollDeviationKey);
-  std::optional<WaterCondition> w;
-  if (store) w = store->latestWater(config, nowUtc(), true);
-  if (!w || !w->temperature_degC) {
-    throw InputError("water", "no measured water for configuration " + config + " to turn the weight into a balance",
-                     "give an analysis report with water, or import the ballasting file with its temperature");
-  }
-  if (!s.total_mass_kg) {
-    throw InputError("installed", "no recorded total weight to compare with the buoyancy (thesis eq. 5.2)",
-                     "give an analysis report with net_buoyancy_kg");
-  }
-  e.water.temperature_degC = *w->temperature_degC;
-  e.salinity_psu = w->salinity_psu.value_or(35.0);
-  e.depth_m = 0.0;  // the thesis computes the balance at the surface
-  e.water.pressure_dbar = 0.0;
-  e.water.density_kgm3 = seawater::density(e.salinity_psu, e.water.temperature_degC, 0.0);
-  e.net_buoyancy_kg = std::numeric_limits<double>::quiet_NaN();  // filled by the caller
-  return e;
-}
-
 PlannedWater plannedWater(const PlanOpts& o, const TrimEstimate& e, const Sources& s, std::string& source) {
-  PlannedWater w;
-  w.latitude_deg = parseNumber(o.latitude, "latitude", "the latitude in degrees");
+  // The last mission's water unless the operator gives it.
+  PlannedWater w = lastMissionWater(e, parseNumber(o.latitude, "latitude", "the latitude in degrees"));
   const bool any = !o.temperature.empty() || !o.salinity.empty() || !o.depth.empty();
   source = any ? "operator" : "last mission";
   if (o.temperature.empty()) {
@@ -109,13 +74,11 @@ PlannedWater plannedWater(const PlanOpts& o, const TrimEstimate& e, const Source
                            " degC, " + toIsoUtc(*s.measured_at) + ") is older than one month (thesis \u00a75.5.3)",
                        "measure the water and give --temperature DEGC (and --salinity PSU)");
     }
-    w.temperature_degC = e.water.temperature_degC;
   } else {
     w.temperature_degC = parseNumber(o.temperature, "temperature", "the next mission's water temperature in degC");
   }
-  w.salinity_psu = o.salinity.empty() ? e.salinity_psu
-                                      : parseNumber(o.salinity, "salinity", "the next mission's practical salinity in PSU");
-  w.depth_m = o.depth.empty() ? e.depth_m : parseNumber(o.depth, "depth", "the next mission's operating depth in metres");
+  if (!o.salinity.empty()) w.salinity_psu = parseNumber(o.salinity, "salinity", "the next mission's practical salinity in PSU");
+  if (!o.depth.empty()) w.depth_m = parseNumber(o.depth, "depth", "the next mission's operating depth in metres");
   return w;
 }
 
@@ -169,26 +132,19 @@ int runPlan(const PlanOpts& o) {
     s.report_name = "history analysis #" + std::to_string(a->id);
   }
 
-  const bool physical = s.report.contains("net_buoyancy_kg") && s.report["net_buoyancy_kg"].is_number();
-  if (physical) {
-    in.estimate = trimEstimateFromReport(s.report, s.report_name);
-  } else if (in.policy == PlanPolicy::Classic) {
-    in.estimate = deviationsOnlyEstimate(store.get(), o.config, s);
-    if (auto w = store ? store->latestWater(o.config, nowUtc(), true) : std::nullopt) s.measured_at = w->measured_at;
-    const double displaced = in.estimate.water.density_kgm3 * v.hull.volumeAt(in.estimate.water.temperature_degC, 0.0);
-    in.estimate.net_buoyancy_kg = displaced - *s.total_mass_kg;
-    in.classic_computed_imbalance_kg = in.estimate.net_buoyancy_kg;
-  } else {
-    throw InputError("report.net_buoyancy_kg",
-                     s.report_name + " has no net buoyancy (e.g. deviations imported from a thesis ballasting file)",
-                     "use --policy classic, or run 'auvballast analyze' on the mission log and give --report");
+  // An analysis without a physical estimate (e.g. imported from a thesis
+  // ballasting file) still carries the deviations the classic table reads;
+  // the mass then comes from the recorded total weight, as in the thesis.
+  std::optional<MeasuredWater> measured;
+  std::optional<WaterCondition> last_water;
+  if (store && config) last_water = store->latestWater(o.config, nowUtc(), true);
+  if (last_water && last_water->temperature_degC) {
+    measured = MeasuredWater{*last_water->temperature_degC, last_water->salinity_psu.value_or(35.0)};
   }
-  if (physical && in.policy == PlanPolicy::Classic && s.total_mass_kg) {
-    // The thesis's own balance (eq. 5.2): recorded weight against rho V.
-    in.classic_computed_imbalance_kg =
-        in.estimate.water.density_kgm3 * v.hull.volumeAt(in.estimate.water.temperature_degC, in.estimate.water.pressure_dbar) -
-        *s.total_mass_kg;
-  }
+  const PlanStart start = planStartFromReport(v, s.report, s.report_name, in.policy, s.total_mass_kg, measured);
+  if (!start.physical && last_water) s.measured_at = last_water->measured_at;
+  in.estimate = start.estimate;
+  in.classic_computed_imbalance_kg = start.classic_computed_imbalance_kg;
   in.installed_kg = s.installed_kg;
 
   std::string source;
@@ -219,10 +175,9 @@ int runPlan(const PlanOpts& o) {
       st.installed_at = r.at;
       st.recommendation_id = rid;
       double added = 0.0;
+      const std::vector<double> after = installedAfterPlan(s.installed_kg, plan);
       for (std::size_t i = 0; i < v.points.size(); ++i) {
-        // Whole 0.1 g like the pieces: 9.6 + 1.2 is 10.8 kg, not 10.799999999999999.
-        const double kg = std::round((s.installed_kg[i] + plan.points[i].add_kg) * 1e4) / 1e4;
-        st.points.push_back({v.points[i].name, kg, {}});
+        st.points.push_back({v.points[i].name, after[i], {}});
         added += plan.points[i].add_kg;
       }
       if (s.total_mass_kg) st.total_mass_kg = std::round((*s.total_mass_kg + added) * 1e4) / 1e4;

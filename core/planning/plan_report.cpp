@@ -47,7 +47,8 @@ nlohmann::json toJson(const PreMissionPlan& p) {
       {"roll_sigma_deg", r6(p.roll_sigma_deg)},
       {"in_band", {{"net_buoyancy", p.buoyancy_in_band}, {"pitch", p.pitch_in_band}, {"roll", p.roll_in_band}}},
       {"flight_pitch_deg", p.flight_pitch_after_deg ? nlohmann::json(r6(*p.flight_pitch_after_deg)) : nlohmann::json(nullptr)},
-      {"flight_speed_mps", p.flight_speed_mps > 0.0 ? nlohmann::json(r6(p.flight_speed_mps)) : nlohmann::json(nullptr)}};
+      {"flight_speed_mps", p.flight_speed_mps > 0.0 ? nlohmann::json(r6(p.flight_speed_mps)) : nlohmann::json(nullptr)},
+      {"flight_pitch_in_band", p.flight_pitch_in_band ? nlohmann::json(*p.flight_pitch_in_band) : nlohmann::json(nullptr)}};
   nlohmann::json j;
   j["vehicle"] = p.vehicle_id;
   j["mode"] = "pre-mission";

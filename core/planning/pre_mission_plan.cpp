@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "analysis/level_flight.h"
 #include "ballast/ballast_solver.h"
 #include "ballast/mass_quanta.h"
 #include "ballast/solution_text.h"
@@ -13,6 +12,7 @@
 #include "common/units.h"
 #include "firstmission/hugin_first_mission.h"
 #include "planning/change_explanation.h"
+#include "planning/flight_pitch.h"
 
 namespace auv {
 namespace {
@@ -117,23 +117,24 @@ void attitudeSigmas(const BallastProblem& pr, const std::vector<std::vector<int>
 // and after the move, at the operating point.
 void predictFlightPitch(const VehicleProfile& v, const TrimEstimate& e, const EstimatedVehicle& ev,
                         const BallastSolution& sol, PreMissionPlan& out) {
-  if (!(e.cruise_speed_mps > 0.0)) return;
-  std::string why;
-  const auto c = analysis::steadyHydroFromProfile(v, why);
-  if (!c) return;
   const PlannedPointResult& op = out.at_points.front();
-  auto fly = [&](double mass_kg, const Eigen::Vector3d& cg) -> std::optional<double> {
-    const analysis::LevelFlight f = analysis::solveLevelFlight(
-        *c, {units::g0 * mass_kg, units::g0 * op.displaced_kg, cg.x() - v.cb_m.x(), cg.z() - v.cb_m.z(),
-             e.cruise_speed_mps, op.state.density_kgm3, 0.0});
-    if (!f.ok) return std::nullopt;
-    return units::radToDeg(f.pitch_rad);
-  };
-  out.flight_speed_mps = e.cruise_speed_mps;
-  out.flight_pitch_before_deg = fly(ev.mass.mass_kg, ev.mass.cg_m);
+  out.flight_pitch_before_deg = flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg, ev.mass.cg_m, op);
   double added = 0.0;
   for (const auto& p : out.points) added += p.add_kg;
-  out.flight_pitch_after_deg = fly(ev.mass.mass_kg + added, sol.cg_m);
+  out.flight_pitch_after_deg = flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg + added, sol.cg_m, op);
+  if (!out.flight_pitch_after_deg) return;
+  out.flight_speed_mps = e.cruise_speed_mps;
+  out.flight_pitch_in_band = std::abs(*out.flight_pitch_after_deg) <= v.spec.pitch_tolerance_deg;
+  // The solver's pitch warnings are about the attitude at rest; say so, and
+  // what the vehicle will fly, which is what the band is about.
+  char buf[160];
+  std::snprintf(buf, sizeof buf, " (at rest); flying level at %.1f m/s it pitches %+.2f\u00b0, %s", e.cruise_speed_mps,
+                *out.flight_pitch_after_deg, *out.flight_pitch_in_band ? "inside the band" : "outside the band");
+  for (std::string& w : out.warnings) {
+    if (w.rfind("pitch band", 0) != 0) continue;
+    const std::size_t semi = w.find(';');
+    w.insert(semi == std::string::npos ? w.size() : semi, buf);
+  }
 }
 
 std::vector<std::vector<int>> classicMove(const VehicleProfile& v, const PreMissionInput& in, const BallastProblem& pr,

@@ -72,6 +72,7 @@ struct PreMissionPlan {
   // profile's hydrodynamics or a cruise speed (analysis/level_flight.h).
   std::optional<double> flight_pitch_before_deg, flight_pitch_after_deg;
   double flight_speed_mps = 0.0;
+  std::optional<bool> flight_pitch_in_band;  // the spec's pitch band, judged in flight
   double margin_kg = 0.0;       // k * sigma_net
   double band_lo_kg = 0.0, band_hi_kg = 0.0;  // net buoyancy band asked of the solver at the operating point
   std::vector<PlannedPointResult> at_points;  // operating first
