@@ -173,7 +173,7 @@
     <message>
         <location filename="../../ui/pages/deviation_plots_page.cpp" line="88" />
         <source>&amp;Whole log</source>
-        <translation>&amp;Hele loggen</translation>
+        <translation>Hele &amp;loggen</translation>
     </message>
     <message>
         <location filename="../../ui/pages/deviation_plots_page.cpp" line="90" />
@@ -194,6 +194,251 @@
         <location filename="../../ui/pages/deviation_plots_page.cpp" line="239" />
         <source>Not saved: %1</source>
         <translation>Ikke lagret: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>n/a</source>
+        <translation>i.t.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>not identifiable</source>
+        <translation>ikke identifiserbar</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Analysis: depth, pitch and roll as flown</source>
+        <translation>Analyse: dybde, stamp og rull slik fartøyet gikk</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Shaded: the steady segments the analysis used. Wheel or +/-: zoom; drag or arrows: move; double-click: whole log.</source>
+        <translation>Skyggelagt: de stabile segmentene analysen brukte. Hjul eller +/-: zoom; dra eller piltaster: flytt; dobbeltklikk: hele loggen.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Steady &amp;segments used</source>
+        <translation>Brukte stabile &amp;segmenter</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Export &amp;PNG…</source>
+        <translation>Eksporter &amp;PNG…</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Save the three charts as they are shown as a PNG image.</source>
+        <translation>Lagre de tre diagrammene slik de vises, som PNG-bilde.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Export &amp;CSV…</source>
+        <translation>Eksporter &amp;CSV…</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Save every logged sample of the plotted channels within the visible time window as a mission-log CSV (not the thinned-out points drawn).</source>
+        <translation>Lagre alle loggede verdier for de viste kanalene i det synlige tidsvinduet som misjonslogg-CSV (ikke de uttynnede punktene som tegnes).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>&lt;b&gt;No analysis&lt;/b&gt;: %1</source>
+        <translation>&lt;b&gt;Ingen analyse&lt;/b&gt;: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Net buoyancy: &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>Netto oppdrift: &lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source> kg</source>
+        <translation> kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>(too light, 1 σ)</source>
+        <translation>(for lett, 1 σ)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>(too heavy, 1 σ)</source>
+        <translation>(for tung, 1 σ)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>(neutral, 1 σ)</source>
+        <translation>(nøytral, 1 σ)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>; add %1 for neutral at %2 kg/m³</source>
+        <translation>; legg til %1 for nøytral ved %2 kg/m³</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source> g</source>
+        <translation> g</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>CG − CB: &lt;b&gt;not identifiable&lt;/b&gt; (see the notes)</source>
+        <translation>CG − CB: &lt;b&gt;ikke identifiserbar&lt;/b&gt; (se merknadene)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>CG − CB: x &lt;b&gt;%1&lt;/b&gt;, y &lt;b&gt;%2&lt;/b&gt;</source>
+        <translation>CG − CB: x &lt;b&gt;%1&lt;/b&gt;, y &lt;b&gt;%2&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Errors (95 %): depth %1 · pitch %2 · roll %3</source>
+        <translation>Avvik (95 %): dybde %1 · stamp %2 · rull %3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Water at %1: %2 · %3 · %4 (95 %)</source>
+        <translation>Vann ved %1: %2 · %3 · %4 (95 %)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source> °C</source>
+        <translation> °C</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source> PSU</source>
+        <translation> PSU</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source> kg/m³</source>
+        <translation> kg/m³</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Net buoyancy</source>
+        <translation>Netto oppdrift</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>CG x</source>
+        <translation>CG x</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>CG y</source>
+        <translation>CG y</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Pitch error: %1</source>
+        <translation>Stampavvik: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Each steady glide the analysis used (time in minutes): its mean depth and pitch, and the roll ± its 95 % interval. Click a row to zoom to it.</source>
+        <translation>Hvert stabile glid analysen brukte (tid i minutter): middeldybde og -stamp, og rull ± 95 %-intervallet. Klikk på en rad for å zoome til den.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Each steady segment the analysis used (time in minutes): mean error ± its 95 % interval (depth: commanded − measured; pitch: measured − commanded; roll: as measured). Click a row to zoom to it.</source>
+        <translation>Hvert stabile segment analysen brukte (tid i minutter): middelavvik ± 95 %-intervallet (dybde: ønsket − målt; stamp: målt − ønsket; rull: som målt). Klikk på en rad for å zoome til den.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Point at a chart to read the time and the values there.</source>
+        <translation>Pek på et diagram for å lese av tiden og verdiene der.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>depth</source>
+        <translation>dybde</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>pitch</source>
+        <translation>stamp</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>roll</source>
+        <translation>rull</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>%1 %2 (command %3)</source>
+        <translation>%1 %2 (ønsket %3)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>&lt;b&gt;%1 min&lt;/b&gt;: %2</source>
+        <translation>&lt;b&gt;%1 min&lt;/b&gt;: %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Could not write %1: check the folder and its permissions.</source>
+        <translation>Kunne ikke skrive %1: sjekk mappen og tilgangen til den.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Not exported: %1</source>
+        <translation>Ikke eksportert: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Export the charts</source>
+        <translation>Eksporter diagrammene</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>PNG images (*.png)</source>
+        <translation>PNG-bilder (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>Export the plotted data</source>
+        <translation>Eksporter de viste dataene</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" />
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-filer (*.csv)</translation>
     </message>
 </context>
 <context>
@@ -521,6 +766,56 @@
         <location filename="../../ui/pages/log_import_page.cpp" line="227" />
         <source>Why: %1.</source>
         <translation>Hvorfor: %1.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source>&amp;Map columns…</source>
+        <translation>&amp;Koble kolonner…</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source>Say which column of a vendor text log is the time, the depth, the pitch… and read it again.</source>
+        <translation>Angi hvilken kolonne i en leverandørs tekstlogg som er tiden, dybden, stampen … og les den på nytt.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source>Adjustment weight installed &amp;during this mission</source>
+        <translation>Justeringsvekter montert &amp;under denne misjonen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source>The kit pieces that were in the vehicle while it flew this log, per point. The analysis needs the weight the vehicle flew with.</source>
+        <translation>Vektstykkene som satt i fartøyet mens det gikk denne loggen, per punkt. Analysen trenger vekten fartøyet gikk med.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source> kg</source>
+        <translation> kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source>Kit pieces at %1 during the logged mission, kg (what was installed before it flew, not a planned change).</source>
+        <translation>Vektstykker ved %1 under den loggede misjonen, kg (det som var montert før turen, ikke en planlagt endring).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source>The saved column mapping is damaged and was not used: %1</source>
+        <translation>Den lagrede kolonnekoblingen er skadet og ble ikke brukt: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source>Read completely with the column mapping.</source>
+        <translation>Lest fullstendig med kolonnekoblingen.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source>Read, but no depth or pressure column was recognised: say which column is which.</source>
+        <translation>Lest, men ingen dybde- eller trykkolonne ble gjenkjent: angi hvilken kolonne som er hva.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" />
+        <source>The mapping could not be saved: %1</source>
+        <translation>Koblingen kunne ikke lagres: %1</translation>
     </message>
 </context>
 <context>
@@ -911,8 +1206,8 @@
     </message>
     <message>
         <location filename="../../ui/pages/start_page.cpp" line="100" />
-        <source>Needs the analysis of a mission, which this version of the wizard does not do yet.</source>
-        <translation>Krever analyse av et oppdrag, som denne versjonen av veiviseren ikke gjør ennå.</translation>
+        <source>Plan the next mission from the last analysed mission of this configuration: needs an analysis in the history (post-mission mode) or in this session.</source>
+        <translation>Planlegg neste oppdrag ut fra det sist analyserte oppdraget med denne konfigurasjonen: krever en analyse i historikken (etter oppdrag) eller i denne økten.</translation>
     </message>
     <message>
         <location filename="../../ui/pages/start_page.cpp" line="135" />
@@ -1439,6 +1734,1308 @@
         <location filename="../../ui/widgets/weight_map_widget.cpp" line="58" />
         <source>CB</source>
         <translation>CB</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::AdjustmentPage</name>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="48" />
+        <source>installed mass</source>
+        <translation>montert masse</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="60" />
+        <source>Adjust the ballast</source>
+        <translation>Juster ballasten</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="61" />
+        <source>Do the steps, tick each one, then enter what is actually in each point if it differs.</source>
+        <translation>Gjør stegene, kryss av hvert av dem, og skriv inn hva som faktisk er i hvert punkt hvis det avviker.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="68" />
+        <source>Quantity</source>
+        <translation>Størrelse</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="68" />
+        <source>Now</source>
+        <translation>Nå</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="68" />
+        <source>After (± 1σ)</source>
+        <translation>Etter (± 1σ)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="68" />
+        <source>Band</source>
+        <translation>Bånd</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="75" />
+        <source>What the vehicle will do at the operating depth, against the spec bands. Green: inside the band, red: outside.</source>
+        <translation>Hva fartøyet vil gjøre på operasjonsdybden, mot kravbåndene. Grønn: innenfor båndet, rød: utenfor.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="89" />
+        <source>&amp;Steps (tick each when done):</source>
+        <translation>&amp;Steg (kryss av hvert når det er gjort):</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="92" />
+        <source>Do the steps in this order: removals first. Space ticks the selected step.</source>
+        <translation>Gjør stegene i denne rekkefølgen: det som skal fjernes først. Mellomrom krysser av valgt steg.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="97" />
+        <source>Actually installed</source>
+        <translation>Faktisk montert</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="106" />
+        <source>&amp;Undo</source>
+        <translation>&amp;Angre</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="111" />
+        <source>&amp;Redo</source>
+        <translation>&amp;Gjør om</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="124" />
+        <source>Undo the last change of an installed mass (Ctrl+Z).</source>
+        <translation>Angre siste endring av en montert masse (Ctrl+Z).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="129" />
+        <source>Redo the change undone last (Ctrl+Shift+Z).</source>
+        <translation>Gjør om endringen som sist ble angret (Ctrl+Shift+Z).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="198" />
+        <source>Kit pieces now in '%1' after the work, in kg. Planned: %2. Arrows step by one %3 piece; Ctrl+Z undoes.</source>
+        <translation>Vektbiter i «%1» etter arbeidet, i kg. Planlagt: %2. Piltastene endrer med én %3-bit; Ctrl+Z angrer.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="232" />
+        <source>Add %1 × %2 at %3</source>
+        <translation>Legg til %1 × %2 i %3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="232" />
+        <source>Remove %1 × %2 at %3</source>
+        <translation>Fjern %1 × %2 fra %3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="245" />
+        <source>Nothing to change: the vehicle stays as it is.</source>
+        <translation>Ingenting å endre: fartøyet blir som det er.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="258" />
+        <source>%1 of %2 done</source>
+        <translation>%1 av %2 gjort</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="275" />
+        <source>Net buoyancy</source>
+        <translation>Netto oppdrift</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="275" />
+        <source>%1 kg</source>
+        <translation>%1 kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="276" />
+        <source>%1 ± %2 kg</source>
+        <translation>%1 ± %2 kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="277" />
+        <source>%1 .. %2 kg</source>
+        <translation>%1 .. %2 kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="279" />
+        <source>Pitch at rest</source>
+        <translation>Stamp i ro</translation>
+    </message>
+    <message>
+        <source>Pitch in flight (%1 m/s)</source>
+        <translation>Stamp under fart (%1 m/s)</translation>
+    </message>
+    <message>
+        <source> Pitch in flight %1° %2.</source>
+        <translation> Stamp under fart %1° %2.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="279" />
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="280" />
+        <source>%1° ± %2°</source>
+        <translation>%1° ± %2°</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="281" />
+        <source>±%1°</source>
+        <translation>±%1°</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="282" />
+        <source>Roll</source>
+        <translation>Rull</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="302" />
+        <source>%1 m %2 kg</source>
+        <translation>%1 m %2 kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="304" />
+        <source>Safety: net buoyancy stays above the margin %1 kg (%2) at every planned depth: %3.</source>
+        <translation>Sikkerhet: netto oppdrift holder seg over marginen %1 kg (%2) på hver planlagte dybde: %3.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="305" />
+        <source>&lt;span style='color:#b00020'&gt;Not safe: net buoyancy falls below the margin %1 kg (%2) at a planned depth: %3.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00020'&gt;Ikke sikkert: netto oppdrift faller under marginen %1 kg (%2) på en planlagt dybde: %3.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="307" />
+        <source>1.645 σ</source>
+        <translation>1,645 σ</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="323" />
+        <source>As planned: the prediction above holds.</source>
+        <translation>Som planlagt: prediksjonen over gjelder.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="333" />
+        <source>Differs from the plan at %1. As installed: net buoyancy %2 ± %3 kg %4, pitch %5° ± %6° %7, roll %8° ± %9° %10%11</source>
+        <translation>Avviker fra planen i %1. Slik det er montert: netto oppdrift %2 ± %3 kg %4, stamp %5° ± %6° %7, rull %8° ± %9° %10%11</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="338" />
+        <source>.</source>
+        <translation>.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="338" />
+        <source>; NOT safe at every planned depth.</source>
+        <translation>; IKKE sikkert på hver planlagte dybde.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="387" />
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::CraneSideView</name>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="14" />
+        <source>Side view, bow to the right: where each crane scale hangs and what it reads.</source>
+        <translation>Sett fra siden, baugen til høyre: hvor hver kranvekt henger og hva den viser.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="52" />
+        <source>bow ▶</source>
+        <translation>baug ▶</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="57" />
+        <source>CB</source>
+        <translation>CB</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="64" />
+        <source>CG</source>
+        <translation>CG</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="78" />
+        <source>hook: %1 kg</source>
+        <translation>krok: %1 kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="87" />
+        <source>FS</source>
+        <translation>FS</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="87" />
+        <source>FP</source>
+        <translation>FB</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="88" />
+        <source>AS</source>
+        <translation>AS</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="88" />
+        <source>AP</source>
+        <translation>AB</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="97" />
+        <source>%1 %2 kg</source>
+        <translation>%1 %2 kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="108" />
+        <source>Ropes at x = %1 m (fore) and %2 m (aft); starboard and port scales hang one behind the other.</source>
+        <translation>Stropper ved x = %1 m (forut) og %2 m (akter); styrbord- og babordvekten henger bak hverandre.</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::PreMissionPage</name>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="41" />
+        <source>Plan the next mission</source>
+        <translation>Planlegg neste oppdrag</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="42" />
+        <source>From what the last mission showed and the water of the next one: which pieces to add or remove.</source>
+        <translation>Ut fra hva forrige oppdrag viste og vannet i det neste: hvilke vektbiter som skal legges til eller fjernes.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="44" />
+        <source>What the plan starts from</source>
+        <translation>Hva planen bygger på</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="59" />
+        <source>Next mission's water</source>
+        <translation>Vannet i neste oppdrag</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="60" />
+        <source>&amp;Last mission's CTD</source>
+        <translation>Siste oppdrags &amp;CTD</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="62" />
+        <source>Fly in the water the analysed mission measured: its temperature and salinity at its operating depth.</source>
+        <translation>Kjør i vannet det analyserte oppdraget målte: temperatur og salinitet på dets operasjonsdybde.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="63" />
+        <source>&amp;Values I enter</source>
+        <translation>&amp;Verdier jeg skriver inn</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="65" />
+        <source>Another area, season or depth: enter the temperature and salinity you measured or expect.</source>
+        <translation>Annet område, annen årstid eller dybde: skriv inn temperaturen og saliniteten du har målt eller forventer.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="70" />
+        <source>Water temperature at the operating depth (CTD cast), in °C.</source>
+        <translation>Vanntemperatur på operasjonsdybden (CTD-profil), i °C.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="71" />
+        <source>enter °C</source>
+        <translation>skriv inn °C</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="72" />
+        <source>Practical salinity at the operating depth (35 = open ocean).</source>
+        <translation>Praktisk salinitet på operasjonsdybden (35 = åpent hav).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="73" />
+        <source>Depth where the vehicle spends most of the mission: the band applies there.</source>
+        <translation>Dybden der fartøyet er mesteparten av oppdraget: båndet gjelder der.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="75" />
+        <source>Deepest planned depth, if deeper than the operating depth: the vehicle must not be heavy there either. 0 = not deeper.</source>
+        <translation>Dypeste planlagte dybde, hvis dypere enn operasjonsdybden: fartøyet må ikke være tungt der heller. 0 = ikke dypere.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="77" />
+        <source>Latitude of the area (gravity for depth to pressure).</source>
+        <translation>Breddegrad for området (tyngdekraft for dybde til trykk).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="93" />
+        <source>&amp;Temperature:</source>
+        <translation>Te&amp;mperatur:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="94" />
+        <source>&amp;Salinity:</source>
+        <translation>&amp;Salinitet:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="95" />
+        <source>Operating &amp;depth:</source>
+        <translation>&amp;Operasjonsdybde:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="96" />
+        <source>D&amp;eepest depth:</source>
+        <translation>&amp;Dypeste dybde:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="97" />
+        <source>Lat&amp;itude:</source>
+        <translation>&amp;Breddegrad:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="107" />
+        <source>Policy</source>
+        <translation>Strategi</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="108" />
+        <source>E&amp;xact: the whole change now</source>
+        <translation>&amp;Eksakt: hele endringen nå</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="110" />
+        <source>Pieces that bring net buoyancy, pitch and roll into the bands as well as the kit allows.</source>
+        <translation>Vektbiter som bringer netto oppdrift, stamp og rull inn i båndene så godt vektsettet tillater.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="111" />
+        <source>H&amp;alf-way: about half the change</source>
+        <translation>H&amp;alvveis: omtrent halve endringen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="113" />
+        <source>When the estimate is uncertain: move about half way, still never heavy.</source>
+        <translation>Når estimatet er usikkert: flytt omtrent halvveis, men aldri tungt.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="114" />
+        <source>&amp;Classic: the thesis's table</source>
+        <translation>&amp;Klassisk: tabellen i oppgaven</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="116" />
+        <source>The thesis's slow control loop (App. E): one smallest piece per point from the signs of the deviations. For comparison.</source>
+        <translation>Oppgavens langsomme reguleringssløyfe (vedlegg E): én minste vektbit per punkt ut fra fortegnene på avvikene. Til sammenligning.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="125" />
+        <source>Also use the kit's optional pieces (HUGIN: 0.5 kg, thesis §8.1) - only if you have them.</source>
+        <translation>Bruk også vektsettets valgfrie biter (HUGIN: 0,5 kg, oppgaven §8.1) - bare hvis du har dem.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="198" />
+        <source>Use the optional %1 &amp;piece</source>
+        <translation>Bruk den valgfrie %1-b&amp;iten</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="234" />
+        <source>Nothing to plan from: %1 Finish saves the mission to the history; plan the next mission from a log that shows the net buoyancy.</source>
+        <translation>Ingenting å planlegge ut fra: %1 Fullfør lagrer oppdraget i historikken; planlegg neste oppdrag ut fra en logg som viser netto oppdrift.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="237" />
+        <source>Nothing to plan from: %1</source>
+        <translation>Ingenting å planlegge ut fra: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="247" />
+        <source>neutral</source>
+        <translation>nøytral</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="248" />
+        <source>too light</source>
+        <translation>for lett</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="249" />
+        <source>too heavy</source>
+        <translation>for tung</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="252" />
+        <source>Net buoyancy &lt;b&gt;%1 ± %2 kg&lt;/b&gt; (%3) in %4 kg/m³ water at %5 m (%6 °C, %7 PSU).</source>
+        <translation>Netto oppdrift &lt;b&gt;%1 ± %2 kg&lt;/b&gt; (%3) i %4 kg/m³ vann på %5 m (%6 °C, %7 PSU).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="259" />
+        <source>No net buoyancy was measured: the recorded weight against the buoyancy gives &lt;b&gt;%1 kg&lt;/b&gt; (%2), and the classic table works from the deviations.</source>
+        <translation>Netto oppdrift ble ikke målt: registrert vekt mot oppdriften gir &lt;b&gt;%1 kg&lt;/b&gt; (%2), og den klassiske tabellen bruker avvikene.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="264" />
+        <source>%1 ± %2 mm</source>
+        <translation>%1 ± %2 mm</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="264" />
+        <source>not identified</source>
+        <translation>ikke identifisert</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="266" />
+        <source>CG − CB: x %1, y %2</source>
+        <translation>CG − CB: x %1, y %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="267" />
+        <source> (y that levels it at %1 rpm)</source>
+        <translation> (y som gir null rull ved %1 o/min)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="271" />
+        <source>From %1</source>
+        <translation>Fra %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="274" />
+        <source>; its water measured %1 (%2 days ago)</source>
+        <translation>; vannet målt %1 (for %2 dager siden)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="281" />
+        <source>Installed now (%1): %2.</source>
+        <translation>Montert nå (%1): %2.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="283" />
+        <source>The last mission's water is older than one month (thesis §5.5.3): measure the temperature again and enter it.</source>
+        <translation>Vannet fra siste oppdrag er eldre enn én måned (oppgaven §5.5.3): mål temperaturen på nytt og skriv den inn.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="329" />
+        <source>Enter the next mission's water temperature.</source>
+        <translation>Skriv inn vanntemperaturen for neste oppdrag.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="348" />
+        <source>In-situ density %1 kg/m³</source>
+        <translation>In situ-tetthet %1 kg/m³</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="365" />
+        <source>Plan: %1 piece(s) to handle; afterwards net buoyancy %2 ± %3 kg, pitch %4° ± %5°, roll %6° ± %7° at %8 m.</source>
+        <translation>Plan: %1 vektbit(er) å håndtere; etterpå netto oppdrift %2 ± %3 kg, stamp %4° ± %5°, rull %6° ± %7° på %8 m.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="392" />
+        <source>Not saved: %1</source>
+        <translation>Ikke lagret: %1</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::SummaryPage</name>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="28" />
+        <source>Summary and save</source>
+        <translation>Oppsummering og lagring</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="29" />
+        <source>Finish saves all of this to the history in one step. Export the work order for the vehicle's logbook.</source>
+        <translation>Fullfør lagrer alt dette i historikken i ett steg. Eksporter arbeidsordren til fartøyets loggbok.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="39" />
+        <source>The work order as it will be printed (export it as PDF).</source>
+        <translation>Arbeidsordren slik den blir skrevet ut (eksporter den som PDF).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="40" />
+        <source>Export work &amp;order (PDF)…</source>
+        <translation>Eksporter &amp;arbeidsordre (PDF)…</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="42" />
+        <source>One A4 page: vehicle, configuration, water, what to change where, the expected result and a signature line.</source>
+        <translation>Én A4-side: fartøy, konfigurasjon, vann, hva som skal endres hvor, forventet resultat og en signaturlinje.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="44" />
+        <source>Export &amp;JSON report…</source>
+        <translation>Eksporter &amp;JSON-rapport…</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="46" />
+        <source>The plan, the sources and what was actually installed, for other tools.</source>
+        <translation>Planen, kildene og hva som faktisk ble montert, for andre verktøy.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="101" />
+        <source>the mission log &lt;b&gt;%1&lt;/b&gt; with its read summary</source>
+        <translation>oppdragsloggen &lt;b&gt;%1&lt;/b&gt; med innlesingssammendraget</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="104" />
+        <source>the next mission's water: %1 m, %2 °C, %3 PSU (%4)</source>
+        <translation>vannet i neste oppdrag: %1 m, %2 °C, %3 PSU (%4)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="108" />
+        <source>entered</source>
+        <translation>skrevet inn</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="108" />
+        <source>last mission's CTD</source>
+        <translation>siste oppdrags CTD</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="109" />
+        <source>the plan (%1 policy) as the accepted recommendation, from %2</source>
+        <translation>planen (strategi %1) som godtatt anbefaling, fra %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="120" />
+        <source> &lt;i&gt;(plan %1)&lt;/i&gt;</source>
+        <translation> &lt;i&gt;(plan %1)&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="123" />
+        <source>what is actually installed, &lt;b&gt;different from the plan&lt;/b&gt;: %1</source>
+        <translation>hva som faktisk er montert, &lt;b&gt;annerledes enn planen&lt;/b&gt;: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="124" />
+        <source>what is actually installed, as planned: %1</source>
+        <translation>hva som faktisk er montert, som planlagt: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="129" />
+        <source>&lt;b&gt;Finish saves to the history&lt;/b&gt; of configuration &lt;b&gt;%1&lt;/b&gt;, all together or nothing:</source>
+        <translation>&lt;b&gt;Fullfør lagrer i historikken&lt;/b&gt; til konfigurasjon &lt;b&gt;%1&lt;/b&gt;, alt samlet eller ingenting:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="134" />
+        <source>Checklist: %1 of %2 steps ticked.</source>
+        <translation>Sjekkliste: %1 av %2 steg krysset av.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="135" />
+        <source>&lt;span style='color:#b00020'&gt;Not every step is ticked: go back and finish them, or enter what is actually installed.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00020'&gt;Ikke alle steg er krysset av: gå tilbake og fullfør dem, eller skriv inn hva som faktisk er montert.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="139" />
+        <source>&lt;b&gt;Expected result&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Forventet resultat&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="152" />
+        <source>nothing to export</source>
+        <translation>ingenting å eksportere</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="162" />
+        <source>Work order written to %1</source>
+        <translation>Arbeidsordre skrevet til %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="162" />
+        <source>Not exported: %1</source>
+        <translation>Ikke eksportert: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="170" />
+        <source>JSON report written to %1</source>
+        <translation>JSON-rapport skrevet til %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="179" />
+        <source>Export the work order</source>
+        <translation>Eksporter arbeidsordren</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="180" />
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-filer (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="181" />
+        <source>Export the JSON report</source>
+        <translation>Eksporter JSON-rapporten</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="182" />
+        <source>JSON files (*.json)</source>
+        <translation>JSON-filer (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/summary_page.cpp" line="201" />
+        <source>Not saved: %1</source>
+        <translation>Ikke lagret: %1</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::WorkOrder</name>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="38" />
+        <source>add %1 × %2</source>
+        <translation>legg til %1 × %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="38" />
+        <source>remove %1 × %2</source>
+        <translation>fjern %1 × %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="40" />
+        <source>no change</source>
+        <translation>ingen endring</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="43" />
+        <source>✓ in band</source>
+        <translation>✓ innenfor båndet</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="43" />
+        <source>✗ outside the band</source>
+        <translation>✗ utenfor båndet</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="54" />
+        <source>Ballast work order</source>
+        <translation>Arbeidsordre for ballast</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="55" />
+        <source>Vehicle: %1 (%2)</source>
+        <translation>Fartøy: %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="56" />
+        <source>Configuration: %1</source>
+        <translation>Konfigurasjon: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="57" />
+        <source>Date: %1</source>
+        <translation>Dato: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="61" />
+        <source>Payload: %1; area: %2</source>
+        <translation>Nyttelast: %1; område: %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="61" />
+        <source>not given</source>
+        <translation>ikke oppgitt</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="63" />
+        <source>Plan: %1 policy, from %2</source>
+        <translation>Plan: strategi %1, fra %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="66" />
+        <source>Operating depth %1 m: %2 °C, %3 PSU, in-situ density %4 kg/m³ (%5)</source>
+        <translation>Operasjonsdybde %1 m: %2 °C, %3 PSU, in situ-tetthet %4 kg/m³ (%5)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="71" />
+        <source>entered by the operator</source>
+        <translation>skrevet inn av operatøren</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="71" />
+        <source>last mission's CTD</source>
+        <translation>siste oppdrags CTD</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="74" />
+        <source>%1 m (%2)</source>
+        <translation>%1 m (%2)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="76" />
+        <source>Must also stay light at: %1</source>
+        <translation>Må også holde seg lett på: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="80" />
+        <source>Point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="80" />
+        <source>Now</source>
+        <translation>Nå</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="80" />
+        <source>Change</source>
+        <translation>Endring</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="80" />
+        <source>Pieces</source>
+        <translation>Vektbiter</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="80" />
+        <source>After</source>
+        <translation>Etter</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="80" />
+        <source>Done</source>
+        <translation>Gjort</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="86" />
+        <source> (plan %1)</source>
+        <translation> (plan %1)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="93" />
+        <source>As actually installed, at %1 m:</source>
+        <translation>Slik det faktisk er montert, på %1 m:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="93" />
+        <source>As planned, at %1 m:</source>
+        <translation>Som planlagt, på %1 m:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="94" />
+        <source>Net buoyancy %1 ± %2 kg (band %3 .. %4 kg): %5</source>
+        <translation>Netto oppdrift %1 ± %2 kg (bånd %3 .. %4 kg): %5</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="98" />
+        <source>Pitch at rest %1° ± %2° (band ±%3°): %4</source>
+        <translation>Stamp i ro %1° ± %2° (bånd ±%3°): %4</translation>
+    </message>
+    <message>
+        <source>Pitch in flight at %1 m/s %2° (band ±%3°): %4</source>
+        <translation>Stamp under fart ved %1 m/s %2° (bånd ±%3°): %4</translation>
+    </message>
+    <message>
+        <source>Pitch in flight: not predicted (no hydrodynamics or cruise speed)</source>
+        <translation>Stamp under fart: ikke beregnet (mangler hydrodynamikk eller marsjfart)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="101" />
+        <source>Roll %1° ± %2° (band ±%3°): %4</source>
+        <translation>Rull %1° ± %2° (bånd ±%3°): %4</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="104" />
+        <source>Safe: at least %1 kg light (1.645 σ) at every planned depth.</source>
+        <translation>Sikkert: minst %1 kg lett (1,645 σ) på hver planlagte dybde.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="105" />
+        <source>NOT SAFE: less than %1 kg light (1.645 σ) at a planned depth.</source>
+        <translation>IKKE SIKKERT: mindre enn %1 kg lett (1,645 σ) på en planlagt dybde.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="108" />
+        <source>Done by: ______________________   Signature: ______________________   Date: ____________</source>
+        <translation>Utført av: ______________________   Signatur: ______________________   Dato: ____________</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="145" />
+        <source>Next mission's water</source>
+        <translation>Vannet i neste oppdrag</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="148" />
+        <source>What to change</source>
+        <translation>Hva som skal endres</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="186" />
+        <source>Expected result</source>
+        <translation>Forventet resultat</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="190" />
+        <source>Warnings</source>
+        <translation>Advarsler</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="191" />
+        <source>⚠ %1</source>
+        <translation>⚠ %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" line="209" />
+        <source>cannot write %1: check the folder and its permissions</source>
+        <translation>kan ikke skrive %1: sjekk mappen og tilgangene</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::ColumnMappingDialog</name>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>&amp;Time *</source>
+        <translation>&amp;Tid *</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>&amp;Depth, measured *</source>
+        <translation>&amp;Dybde, målt *</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Depth &amp;command</source>
+        <translation>Ønsket d&amp;ybde</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>&amp;Pitch</source>
+        <translation>&amp;Stamp</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Pitch c&amp;ommand</source>
+        <translation>Ønsket st&amp;amp</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>&amp;Roll</source>
+        <translation>&amp;Rull</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Speed through &amp;water</source>
+        <translation>Fart gjennom &amp;vannet</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Propeller sp&amp;eed</source>
+        <translation>Propellt&amp;urtall</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>E&amp;levator angle</source>
+        <translation>Dybderorvin&amp;kel</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Press&amp;ure (CTD)</source>
+        <translation>Trykk (&amp;CTD)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Water te&amp;mperature</source>
+        <translation>Vanntem&amp;peratur</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Sali&amp;nity</source>
+        <translation>Sa&amp;linitet</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Buoyancy pump &amp;volume</source>
+        <translation>&amp;Oppdriftspumpens volum</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Map the columns of %1</source>
+        <translation>Koble kolonnene i %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Say which column of the file holds each quantity. The first rows are shown below; the choices are pre-filled with what the reader recognised.</source>
+        <translation>Angi hvilken kolonne i filen som inneholder hver størrelse. De første radene vises nedenfor; valgene er forhåndsutfylt med det leseren kjente igjen.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>The first rows of the file, split at the chosen delimiter.</source>
+        <translation>De første radene i filen, delt ved valgt skilletegn.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>recognise</source>
+        <translation>gjenkjenn</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>comma ,</source>
+        <translation>komma ,</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>semicolon ;</source>
+        <translation>semikolon ;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>tab</source>
+        <translation>tabulator</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>blanks</source>
+        <translation>mellomrom</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>What separates the columns. 'recognise' lets the reader decide from the file.</source>
+        <translation>Hva som skiller kolonnene. «gjenkjenn» lar leseren avgjøre ut fra filen.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>point 1.5</source>
+        <translation>punktum 1.5</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>comma 1,5</source>
+        <translation>komma 1,5</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>The decimal mark of the numbers (a comma is only possible when the columns are not separated by commas).</source>
+        <translation>Desimaltegnet i tallene (komma er bare mulig når kolonnene ikke er skilt med komma).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>seconds (or the unit)</source>
+        <translation>sekunder (eller enheten)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>seconds since 1970</source>
+        <translation>sekunder siden 1970</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>ISO 8601 (2026-05-14T08:12:00Z)</source>
+        <translation>ISO 8601 (2026-05-14T08:12:00Z)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>dd.mm.yyyy hh:mm:ss</source>
+        <translation>dd.mm.åååå tt:mm:ss</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>hh:mm:ss (date from a date column)</source>
+        <translation>tt:mm:ss (dato fra en datokolonne)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>How the time column is written.</source>
+        <translation>Hvordan tidskolonnen er skrevet.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source> h</source>
+        <translation> t</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>The logger clock runs at UTC + this many hours (e.g. 2 for CEST). Leave at 'not stated' when the times are UTC or carry their zone.</source>
+        <translation>Loggerens klokke går på UTC + så mange timer (f.eks. 2 for sommertid). La stå på «ikke oppgitt» når tidene er UTC eller har sin egen sone.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>not stated</source>
+        <translation>ikke oppgitt</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Delim&amp;iter:</source>
+        <translation>Sk&amp;illetegn:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Decimal mar&amp;k:</source>
+        <translation>Desi&amp;maltegn:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Time &amp;format:</source>
+        <translation>Tids&amp;format:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Lo&amp;gger clock: UTC +</source>
+        <translation>Lo&amp;ggerklokke: UTC +</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Columns (* = required; depth may instead come from pressure)</source>
+        <translation>Kolonner (* = påkrevd; dybden kan i stedet komme fra trykket)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>&lt;b&gt;Quantity&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Størrelse&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>&lt;b&gt;Column in the file&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Kolonne i filen&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>&lt;b&gt;Unit&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Enhet&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>The column holding this quantity, or 'not in this file'.</source>
+        <translation>Kolonnen med denne størrelsen, eller «ikke i denne filen».</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Unit of numeric times: s, ms, min or h. Empty = from the header, else s.</source>
+        <translation>Enhet for numeriske tider: s, ms, min eller h. Tom = fra overskriften, ellers s.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Unit of the numbers in the file, e.g. m, ft, dbar, deg, rad, m/s, knots, rpm, degC. Empty = from the header, else the format's unit.</source>
+        <translation>Enheten til tallene i filen, f.eks. m, ft, dbar, deg, rad, m/s, knots, rpm, degC. Tom = fra overskriften, ellers formatets enhet.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>&amp;Save this mapping for %1 (used for its next text logs)</source>
+        <translation>Lagr&amp;e koblingen for %1 (brukes for de neste tekstloggene)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Keep the mapping so later logs of this vehicle are read the same way without asking.</source>
+        <translation>Behold koblingen slik at senere logger fra dette fartøyet leses likt uten å spørre.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Read with this m&amp;apping</source>
+        <translation>Les med denne ko&amp;blingen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>(not in this file)</source>
+        <translation>(ikke i denne filen)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Choose the time column.</source>
+        <translation>Velg tidskolonnen.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Choose the depth column (or a pressure column below).</source>
+        <translation>Velg dybdekolonnen (eller en trykkolonne nedenfor).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>Already chosen for %1.</source>
+        <translation>Allerede valgt for %1.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/column_mapping_dialog.cpp" />
+        <source>The first rows cannot be read with this mapping: %1</source>
+        <translation>De første radene kan ikke leses med denne koblingen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::ModelCheckPage</name>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Model check: what the model leaves out</source>
+        <translation>Modellsjekk: hva modellen utelater</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>The recording is compared with the vehicle model replaying the mission. Physics the model lacks is named, fitted and kept only if it also improves data it was not fitted on.</source>
+        <translation>Opptaket sammenlignes med fartøysmodellen som gjenspiller misjonen. Fysikk modellen mangler navngis, tilpasses og beholdes bare hvis den også forbedrer data den ikke ble tilpasset på.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>The model check is running (about a second for a few hours of log).</source>
+        <translation>Modellsjekken kjører (omtrent ett sekund for noen timers logg).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>The channel shown: recorded, the model with its ballast state only, and with the accepted terms. The one the model misses most is chosen first.</source>
+        <translation>Kanalen som vises: opptaket, modellen med bare ballasttilstanden, og med de aksepterte leddene. Den modellen bommer mest på velges først.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Sho&amp;w:</source>
+        <translation>&amp;Vis:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>the &amp;difference recorded − model</source>
+        <translation>&amp;differansen opptak − modell</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Plot recorded minus model (with the ballast state only, and with the accepted terms) instead of the values: small misfits become visible.</source>
+        <translation>Tegn opptak minus modell (med bare ballasttilstanden, og med de aksepterte leddene) i stedet for verdiene: små avvik blir synlige.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>time since start [min]</source>
+        <translation>tid siden start [min]</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>recorded</source>
+        <translation>opptak</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>model, ballast state only</source>
+        <translation>modell, bare ballasttilstand</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>model with the accepted terms</source>
+        <translation>modell med aksepterte ledd</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Accept: term</source>
+        <translation>Aksepter: ledd</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Value ± σ</source>
+        <translation>Verdi ± σ</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Held-out RMS without → with</source>
+        <translation>RMS på holdt-ut data uten → med</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Physics the model lacks, best first. Tick a term to accept it (Space toggles the selected row); accepted terms go into the vehicle model for the next mission.</source>
+        <translation>Fysikk modellen mangler, beste først. Kryss av et ledd for å akseptere det (mellomrom veksler valgt rad); aksepterte ledd går inn i fartøysmodellen for neste misjon.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>No log imported: go back to the import page.</source>
+        <translation>Ingen logg importert: gå tilbake til importsiden.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Checking the model against the recording…</source>
+        <translation>Sjekker modellen mot opptaket …</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>The model check cannot run on this log: %1</source>
+        <translation>Modellsjekken kan ikke kjøres på denne loggen: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Model: %1.</source>
+        <translation>Modell: %1.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>%1 samples in %2 dives/legs. Net buoyancy with the accepted terms &lt;b&gt;%3 ± %4 kg&lt;/b&gt; (ballast state alone: %5 kg)</source>
+        <translation>%1 målinger i %2 dykk/etapper. Netto oppdrift med de aksepterte leddene &lt;b&gt;%3 ± %4 kg&lt;/b&gt; (bare ballasttilstand: %5 kg)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>; CG − CB x %1 ± %2 mm, y %3 ± %4 mm</source>
+        <translation>; CG − CB x %1 ± %2 mm, y %3 ± %4 mm</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>%1 [%2]</source>
+        <translation>%1 [%2]</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source> - largest mismatch</source>
+        <translation> – størst avvik</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>difference [%1]</source>
+        <translation>differanse [%1]</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>recorded − model, ballast state only</source>
+        <translation>opptak − modell, bare ballasttilstand</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>recorded − model with the accepted terms</source>
+        <translation>opptak − modell med aksepterte ledd</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>%1: RMS recorded − model %2 → %3 %4 (ballast state only → with the accepted terms)</source>
+        <translation>%1: RMS opptak − modell %2 → %3 %4 (bare ballasttilstand → med aksepterte ledd)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>No missing physics found: the model with its ballast state explains this log within its noise.</source>
+        <translation>Ingen manglende fysikk funnet: modellen med ballasttilstanden forklarer denne loggen innenfor støyen.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>This log cannot tell it from: %1</source>
+        <translation>Denne loggen kan ikke skille det fra: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>%1 ± %2 %3</source>
+        <translation>%1 ± %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>%1 → %2 %3</source>
+        <translation>%1 → %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Held-out simulation RMS of %1, without and with this term (fitted on one half of the dives/legs, scored on the other).</source>
+        <translation>Simulerings-RMS for %1 på holdt-ut data, uten og med dette leddet (tilpasset på den ene halvdelen av dykkene/etappene, vurdert på den andre).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>&lt;b&gt;%1&lt;/b&gt; acts where: %2</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; virker der: %2</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>&lt;b&gt;Where the ballast-only model misses&lt;/b&gt;:</source>
+        <translation>&lt;b&gt;Der modellen med bare ballasttilstand bommer&lt;/b&gt;:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>%1, %2: %3</source>
+        <translation>%1, %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Cannot be told apart: %1</source>
+        <translation>Kan ikke skilles: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Not saved: %1</source>
+        <translation>Ikke lagret: %1</translation>
     </message>
 </context>
 </TS>

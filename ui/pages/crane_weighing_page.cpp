@@ -10,6 +10,7 @@
 
 #include "common/input_error.h"
 #include "weighing/crane_weighing.h"
+#include "widgets/crane_side_view.h"
 #include "widgets/inputs.h"
 #include "wizard/operator_wizard.h"
 
@@ -58,6 +59,8 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   error_->setWordWrap(true);
   error_->setStyleSheet("color: #b00020;");
 
+  side_view_ = new CraneSideView;
+
   auto* grid = new QGridLayout;
   grid->addWidget(scalesBox, 0, 0, 2, 1);
   grid->addWidget(ropeBox, 0, 1);
@@ -65,10 +68,40 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   auto* lay = new QVBoxLayout(this);
   lay->addLayout(grid);
   lay->addWidget(error_);
-  lay->addStretch();
+  lay->addWidget(side_view_, 1);
 
   for (auto* s : scales_) connect(s, &QDoubleSpinBox::valueChanged, this, [this] { updateSumCheck(); });
   connect(total_, &QDoubleSpinBox::valueChanged, this, [this] { updateSumCheck(); });
+  for (auto* s : {rope_fore_, rope_aft_, rope_y_}) {
+    connect(s, &QDoubleSpinBox::valueChanged, this, [this] { updateSideView(); });
+  }
+}
+
+void CraneWeighingPage::updateSideView() {
+  CraneSideViewData d;
+  if (state_.vehicle) {
+    d.length_m = state_.vehicle->hull.length_m;
+    d.diameter_m = state_.vehicle->hull.diameter_m;
+    d.cb_x_m = state_.vehicle->cb_m.x();
+  }
+  CraneWeighing w = state_.crane.weighing;
+  for (std::size_t i = 0; i < 4; ++i) {
+    d.scales_kg[i] = scales_[i]->value();
+    w.scales_kg[i] = scales_[i]->value();
+  }
+  d.total_kg = total_->value();
+  d.rope_fore_x_m = rope_fore_->value();
+  d.rope_aft_x_m = rope_aft_->value();
+  w.total_kg = d.total_kg;
+  w.rope_x_fore_m = d.rope_fore_x_m;
+  w.rope_x_aft_m = d.rope_aft_x_m;
+  w.rope_y_m = rope_y_->value();
+  try {
+    d.cg_x_m = weighCrane(w).mass.cg_m.x();  // core: the CG the readings give
+  } catch (const InputError&) {
+    // Readings that do not weigh yet (e.g. mid-typing): no CG marker.
+  }
+  side_view_->setData(d);
 }
 
 void CraneWeighingPage::initializePage() {
@@ -105,6 +138,7 @@ void CraneWeighingPage::updateSumCheck() {
     text += tr(": re-read the scales");
   }
   sum_check_->setText(text);
+  updateSideView();
   emit completeChanged();
 }
 

@@ -9,8 +9,11 @@ class QLabel;
 
 namespace auv::ui {
 
+class CraneSideView;
+
 // HUGIN crane method: four part scales, the hook scale, rope stations and
-// the adjustment weight already installed. The sum check runs while typing.
+// the adjustment weight already installed. The sum check and a side view of
+// where each scale hangs (and what it reads) follow the typing.
 class CraneWeighingPage : public QWizardPage {
   Q_OBJECT
  public:
@@ -25,6 +28,7 @@ class CraneWeighingPage : public QWizardPage {
  private:
   void store();
   void updateSumCheck();
+  void updateSideView();
   WizardState& state_;
   std::array<QDoubleSpinBox*, 4> scales_{};
   std::array<QDoubleSpinBox*, 4> installed_{};
@@ -34,6 +38,7 @@ class CraneWeighingPage : public QWizardPage {
   QDoubleSpinBox* rope_y_;
   QLabel* sum_check_;
   QLabel* error_;
+  CraneSideView* side_view_;
   bool sum_ok_ = false;
 };
 

@@ -1,12 +1,15 @@
 #pragma once
 #include <QWizardPage>
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "wizard/wizard_state.h"
 
+class QGridLayout;
 class QLabel;
 class QPushButton;
+class QTableWidget;
 QT_BEGIN_NAMESPACE
 class QChart;
 class QLineSeries;
@@ -17,19 +20,23 @@ namespace auv::ui {
 
 class LinkedChartView;
 
-// Post mission, step 2: depth, pitch and roll as flown, each against its
-// command where the log has one. The three charts share the time axis: zoom
-// or pan one and the others follow. Each series holds at most two points per
-// pixel column over the visible range (plot/min_max_decimation.h), so a 24 h
-// 10 Hz log stays fluid. Finish saves the mission to the history.
+// Post mission, step 2: the analysis of the imported log (core/analysis:
+// net buoyancy and CG offset with their sigmas, depth/pitch/roll errors with
+// 95 % intervals, the water at operating depth, warnings) above depth, pitch
+// and roll as flown, each against its command where the log has one. The
+// analysis's operating segments are shaded on all three charts and listed
+// with their own errors. The charts share the time axis: zoom or pan one and
+// the others follow; a crosshair reads time and values across all three.
+// Each series holds at most two points per pixel column over the visible
+// range (plot/min_max_decimation.h), so a 24 h 10 Hz log stays fluid. The
+// charts export as PNG and the visible time window as CSV (every sample).
 class DeviationPlotsPage : public QWizardPage {
   Q_OBJECT
  public:
   enum Plot { kDepth = 0, kPitch, kRoll };
   explicit DeviationPlotsPage(WizardState& state);
   void initializePage() override;
-  bool validatePage() override;
-  int nextId() const override { return -1; }
+  int nextId() const override;
 
   // Visible time range in minutes since the log start, applied to all charts.
   void setXRange(double x0_min, double x1_min);
@@ -41,12 +48,29 @@ class DeviationPlotsPage : public QWizardPage {
   int pointsDrawn(int plot, int s) const;
   // Samples of that series in the log.
   std::size_t samples(int plot, int s) const;
+  // Operating segments shaded on a chart.
+  int shadedSegments(int plot) const;
+
+  // The crosshair at `x_min` on all three charts (nullopt hides it), as the
+  // mouse does; the readout under the charts says time and values there.
+  void setCrosshair(std::optional<double> x_min);
+  QString readoutText() const;
+
+  // The three charts as one PNG; the plotted channels within the visible
+  // time window, every logged sample, as a mission-log CSV. Both return
+  // false (and say why under the charts) when the file cannot be written;
+  // exportCsv returns the number of rows written, -1 on failure.
+  bool exportPng(const QString& path);
+  long exportCsv(const QString& path);
+  // The analysis error when the log could not be analysed (empty otherwise).
+  QString analysisError() const { return analysis_error_; }
 
  private:
   struct Trace {
     std::vector<double> t_min;  // minutes
     std::vector<double> v;
     QLineSeries* series = nullptr;
+    const char* channel = nullptr;
   };
   struct PlotData {
     QChart* chart = nullptr;
@@ -60,13 +84,32 @@ class DeviationPlotsPage : public QWizardPage {
   void buildPlot(PlotData& p, const char* measured, const char* commanded);
   void redecimate();
   void alignPlotAreas();
+  void runAnalysis();
+  void showAnalysis();
+  void showSegments();
+  void exportPngDialog();
+  void exportCsvDialog();
   WizardState& state_;
   std::array<PlotData, 3> plots_;
   double t_min_ = 0.0, t_max_ = 1.0;
   double x0_ = 0.0, x1_ = 1.0;
+  std::optional<double> cross_;
+  QString analysis_error_;
+  std::vector<std::pair<double, double>> segments_min_;  // operating segments, minutes
+  QWidget* charts_;
+  QGridLayout* summary_grid_;
+  QLabel* net_;
+  QLabel* cg_;
+  QLabel* errors_;
+  QLabel* water_;
+  QTableWidget* segment_table_;
+  QLabel* notes_;
   QLabel* info_;
-  QLabel* save_status_;
+  QLabel* readout_;
+  QLabel* status_;
   QPushButton* reset_;
+  QPushButton* export_png_;
+  QPushButton* export_csv_;
 };
 
 }  // namespace auv::ui

@@ -1,9 +1,12 @@
 #include "pages/log_import_page.h"
 
+#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGridLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -13,8 +16,14 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QVBoxLayout>
+#include <algorithm>
 
+#include "common/input_error.h"
+#include "missionlog/delimited_text_reader.h"
+#include "missionlog/log_reader.h"
+#include "widgets/column_mapping_dialog.h"
 #include "widgets/inputs.h"
+#include "wizard/column_mapping_store.h"
 #include "wizard/operator_wizard.h"
 
 namespace auv::ui {
@@ -55,6 +64,17 @@ QPushButton* button(const QString& text, const char* name, const QString& tip) {
   return b;
 }
 
+// Text a person could map by hand: no NUL bytes, a header and a row.
+bool looksLikeText(const QString& path) {
+  try {
+    const std::string head = readFirstBytes(path.toStdString(), 4096);
+    if (head.find('\0') != std::string::npos) return false;
+    return std::count(head.begin(), head.end(), '\n') >= 1;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 LogImportPage::LogImportPage(WizardState& state) : state_(state) {
@@ -68,6 +88,15 @@ LogImportPage::LogImportPage(WizardState& state) : state_(state) {
   path_->setMinimumHeight(32);
   browse_ = button(tr("&Browse…"), "browse", tr("Choose the log file."));
   import_ = button(tr("&Import"), "import", tr("Read the file named on the left."));
+  map_ = button(tr("&Map columns…"), "map_columns",
+                tr("Say which column of a vendor text log is the time, the depth, the pitch… and read it again."));
+  installed_box_ = new QGroupBox(tr("Adjustment weight installed &during this mission"));
+  installed_box_->setObjectName("installed_box");
+  installed_box_->setToolTip(tr("The kit pieces that were in the vehicle while it flew this log, per point. "
+                                "The analysis needs the weight the vehicle flew with."));
+  installed_grid_ = new QGridLayout(installed_box_);
+  installed_grid_->setContentsMargins(8, 4, 8, 4);
+  installed_grid_->setVerticalSpacing(2);
   progress_ = new QProgressBar;
   progress_->setObjectName("progress");
   progress_->setRange(0, 100);
@@ -98,6 +127,7 @@ LogImportPage::LogImportPage(WizardState& state) : state_(state) {
   row->addWidget(path_, 1);
   row->addWidget(browse_);
   row->addWidget(import_);
+  row->addWidget(map_);
   auto* prow = new QHBoxLayout;
   prow->addWidget(progress_, 1);
   prow->addWidget(cancel_);
@@ -106,11 +136,13 @@ LogImportPage::LogImportPage(WizardState& state) : state_(state) {
   lay->addWidget(drop_hint_);
   lay->addLayout(prow);
   lay->addWidget(status_);
+  lay->addWidget(installed_box_);
   lay->addWidget(summary_);
   lay->addWidget(problems_, 1);
 
   connect(browse_, &QPushButton::clicked, this, [this] { browse(); });
   connect(import_, &QPushButton::clicked, this, [this] { startImport(path_->text()); });
+  connect(map_, &QPushButton::clicked, this, [this] { openMappingDialog(); });
   connect(path_, &QLineEdit::returnPressed, this, [this] { startImport(path_->text()); });
   connect(cancel_, &QPushButton::clicked, this, [this] {
     job_.cancel();
@@ -120,7 +152,52 @@ LogImportPage::LogImportPage(WizardState& state) : state_(state) {
   connect(&job_, &LogImportJob::finished, this, [this](const LogImportOutcome& o) { onFinished(o); });
 }
 
+void LogImportPage::buildInstalledInputs() {
+  const std::string id = state_.vehicle ? state_.vehicle->id : std::string();
+  // A glider's fit does not use it (its ballast state is fitted whole).
+  installed_box_->setVisible(state_.vehicle && !state_.isGlider());
+  if (id == installed_vehicle_ && installed_.size() == (state_.vehicle ? state_.vehicle->points.size() : 0u)) return;
+  installed_vehicle_ = id;
+  for (QDoubleSpinBox* sb : installed_) delete sb;
+  installed_.clear();
+  while (QLayoutItem* item = installed_grid_->takeAt(0)) {
+    delete item->widget();
+    delete item;
+  }
+  if (!state_.vehicle) return;
+  const auto& pts = state_.vehicle->points;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    auto* sb = makeSpin(QString("installed_%1").arg(q(pts[i].name)), 0.0, std::max(pts[i].capacity_kg, 1.0), 2,
+                        tr(" kg"),
+                        tr("Kit pieces at %1 during the logged mission, kg (what was installed before it flew, "
+                           "not a planned change).").arg(q(pts[i].label)));
+    auto* label = new QLabel(q(pts[i].label) + ":");
+    label->setBuddy(sb);
+    const int r = static_cast<int>(i / 2), c = static_cast<int>(i % 2) * 2;
+    sb->setMinimumWidth(130);
+    installed_grid_->addWidget(label, r, c);
+    installed_grid_->addWidget(sb, r, c + 1);
+    installed_.push_back(sb);
+  }
+  installed_grid_->setColumnMinimumWidth(2, 0);
+  installed_grid_->setColumnStretch(4, 1);
+}
+
+std::vector<double> LogImportPage::installedKg() const {
+  std::vector<double> out;
+  for (const QDoubleSpinBox* sb : installed_) out.push_back(sb->value());
+  return out;
+}
+
 void LogImportPage::initializePage() {
+  buildInstalledInputs();
+  // The mission's own entry if there is one, else what the start page took
+  // from the history (or the first-mission input), else nothing.
+  const std::size_t n = installed_.size();
+  const std::vector<double>& from = state_.mission_installed_kg.size() == n ? state_.mission_installed_kg
+                                    : state_.crane.installed_kg.size() == n ? state_.crane.installed_kg
+                                                                            : std::vector<double>(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) installed_[i]->setValue(from[i]);
   path_->setText(q(state_.log_file));
   // A resumed or demo session names its log but has not read it yet.
   if (!state_.log && !state_.log_file.empty() && !job_.running()) {
@@ -151,37 +228,57 @@ void LogImportPage::dropEvent(QDropEvent* e) {
   }
 }
 
-void LogImportPage::startImport(const QString& path) {
+void LogImportPage::startImport(const QString& path, std::optional<ColumnMapping> mapping) {
   if (job_.running() || path.trimmed().isEmpty()) return;
+  QString mapping_note;
+  if (!mapping && state_.vehicle) {
+    QString problem;
+    mapping = loadSavedColumnMapping(state_.vehicle->id, &problem);
+    if (!problem.isEmpty()) mapping_note = tr("The saved column mapping is damaged and was not used: %1").arg(problem);
+  }
   path_->setText(path);
   QSettings().setValue("paths/last_log_folder", QFileInfo(path).absolutePath());
   state_.log.reset();
   state_.log_report.reset();
   state_.log_format.clear();
+  state_.analysis.reset();
+  state_.model_check.reset();
+  // Term choices belong to one log (a resumed session re-reads the same file).
+  if (path.toStdString() != state_.log_file) state_.accepted_terms.clear();
   state_.log_file = path.toStdString();
   summary_->clear();
   problems_->clear();
   status_->setStyleSheet(QString());
-  status_->setText(tr("Reading %1…").arg(QFileInfo(path).fileName()));
+  status_->setText(tr("Reading %1…").arg(QFileInfo(path).fileName()) +
+                   (mapping_note.isEmpty() ? QString() : "\n" + mapping_note));
   progress_->setValue(0);
   cancel_->setEnabled(true);
   import_->setEnabled(false);
   browse_->setEnabled(false);
+  map_->setEnabled(false);
   emit completeChanged();
-  job_.start(path);
+  job_.start(path, std::move(mapping));
 }
 
 void LogImportPage::onFinished(const LogImportOutcome& out) {
   cancel_->setEnabled(false);
   import_->setEnabled(true);
   browse_->setEnabled(true);
+  map_->setEnabled(true);
+  bool ask_mapping = false;
   switch (out.status) {
     case LogImportOutcome::Status::kOk:
       state_.log = out.log;
       state_.log_report = out.report;
       state_.log_format = out.format;
       progress_->setValue(100);
-      status_->setText(tr("Read completely."));
+      status_->setText(out.mapped ? tr("Read completely with the column mapping.") : tr("Read completely."));
+      // Vendor text without anything to analyse: the columns were not recognised.
+      if (!out.mapped && out.format == DelimitedTextReader().formatName() && !out.log->has("depth") &&
+          !out.log->has("pressure")) {
+        status_->setText(tr("Read, but no depth or pressure column was recognised: say which column is which."));
+        ask_mapping = true;
+      }
       break;
     case LogImportOutcome::Status::kCancelled:
       status_->setStyleSheet("color: #8a6d00;");
@@ -190,10 +287,40 @@ void LogImportPage::onFinished(const LogImportOutcome& out) {
     case LogImportOutcome::Status::kFailed:
       status_->setStyleSheet("color: #b00020;");
       status_->setText(tr("Cannot read this file: %1").arg(q(out.error)));
+      ask_mapping = looksLikeText(path_->text());
       break;
   }
   showSummary();
   emit completeChanged();
+  if (ask_mapping) openMappingDialog();
+}
+
+ColumnMappingDialog* LogImportPage::mappingDialog() const { return mapping_dialog_.data(); }
+
+void LogImportPage::openMappingDialog() {
+  const QString file = path_->text().trimmed();
+  if (file.isEmpty() || job_.running()) return;
+  if (mapping_dialog_) mapping_dialog_->deleteLater();
+  const std::string vehicle = state_.vehicle ? state_.vehicle->id : std::string();
+  mapping_dialog_ = new ColumnMappingDialog(file, vehicle, vehicle.empty() ? std::nullopt : loadSavedColumnMapping(vehicle), this);
+  connect(mapping_dialog_, &QDialog::accepted, this, [this] { mappingAccepted(); });
+  mapping_dialog_->open();
+}
+
+void LogImportPage::mappingAccepted() {
+  ColumnMappingDialog* dlg = mapping_dialog_;
+  if (!dlg) return;
+  const ColumnMapping m = dlg->mapping();
+  QString saved;
+  if (dlg->saveForVehicle() && state_.vehicle) {
+    try {
+      saveColumnMapping(state_.vehicle->id, m);
+    } catch (const InputError& e) {
+      saved = tr("The mapping could not be saved: %1").arg(q(e.what()));
+    }
+  }
+  startImport(path_->text(), m);
+  if (!saved.isEmpty()) status_->setText(status_->text() + "\n" + saved);
 }
 
 void LogImportPage::showSummary() {
@@ -232,7 +359,15 @@ void LogImportPage::showSummary() {
 
 bool LogImportPage::isComplete() const { return state_.log != nullptr && !job_.running(); }
 
-bool LogImportPage::validatePage() { return isComplete(); }
+bool LogImportPage::validatePage() {
+  if (!isComplete()) return false;
+  // The analysis and the model check follow from the log and this input;
+  // the next pages compute them again.
+  state_.mission_installed_kg = installedKg();
+  state_.analysis.reset();
+  state_.model_check.reset();
+  return true;
+}
 
 int LogImportPage::nextId() const { return OperatorWizard::kDeviationPlots; }
 

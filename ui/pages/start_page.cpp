@@ -97,7 +97,8 @@ StartPage::StartPage(WizardState& state) : state_(state) {
   mode_post_->setToolTip(tr("You have a log of a mission flown with this configuration."));
   mode_pre_ = new QRadioButton(tr("P&re mission: plan the next mission from the analysed log"));
   mode_pre_->setObjectName("mode_pre");
-  mode_pre_->setToolTip(tr("Needs the analysis of a mission, which this version of the wizard does not do yet."));
+  mode_pre_->setToolTip(tr("Plan the next mission from the last analysed mission of this configuration: needs an "
+                           "analysis in the history (post-mission mode) or in this session."));
   mode_pre_->setEnabled(false);
   for (auto* r : {mode_first_, mode_post_, mode_pre_}) r->setMinimumHeight(28);
   auto* group = new QButtonGroup(this);
@@ -152,6 +153,7 @@ void StartPage::initializePage() {
   refreshTable();
   mode_first_->setChecked(state_.mode == SessionMode::kFirstMission);
   mode_post_->setChecked(state_.mode == SessionMode::kPostMission);
+  if (state_.mode == SessionMode::kPreMission) (mode_pre_->isEnabled() ? mode_pre_ : mode_first_)->setChecked(true);
   showResumeOffer();
 }
 
@@ -240,6 +242,19 @@ std::optional<Configuration> StartPage::selectedConfiguration() const {
 void StartPage::showSelection() {
   const auto c = selectedConfiguration();
   mode_post_->setEnabled(c.has_value());
+  // Planning needs an analysed mission: this session's or the configuration's.
+  bool can_plan = state_.analysis.has_value();
+  if (c && !can_plan) {
+    if (HistoryStore* store = wiz()->history()) {
+      try {
+        can_plan = store->latestAnalysis(c->config_id, wiz()->now()).has_value();
+      } catch (const InputError&) {
+      }
+    }
+  }
+  mode_pre_->setEnabled(can_plan);
+  if (!can_plan && mode_pre_->isChecked()) mode_first_->setChecked(true);
+  if (can_plan && state_.mode == SessionMode::kPreMission) mode_pre_->setChecked(true);
   if (!c) {
     if (mode_post_->isChecked()) mode_first_->setChecked(true);
     last_state_->setText(tr("A new configuration: you name it and choose the vehicle on the next page. "
@@ -353,7 +368,9 @@ bool StartPage::validatePage() {
     error_->setText(q(e.what()));
     return false;
   }
-  state_.mode = mode_post_->isChecked() ? SessionMode::kPostMission : SessionMode::kFirstMission;
+  state_.mode = mode_post_->isChecked()  ? SessionMode::kPostMission
+                : mode_pre_->isChecked() ? SessionMode::kPreMission
+                                         : SessionMode::kFirstMission;
   return true;
 }
 

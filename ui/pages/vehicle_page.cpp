@@ -152,6 +152,7 @@ bool VehiclePage::validatePage() {
 
 int VehiclePage::nextId() const {
   if (state_.mode == SessionMode::kPostMission) return OperatorWizard::kLogImport;
+  if (state_.mode == SessionMode::kPreMission) return OperatorWizard::kPreMission;
   // The profile on screen decides (its kind), so the branch follows the combo at once.
   return shown_kind_ == "glider" ? OperatorWizard::kTankWeighing : OperatorWizard::kCraneWeighing;
 }

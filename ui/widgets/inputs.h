@@ -49,4 +49,10 @@ inline QString fixed(double v, int decimals) {
   return QString::number(v, 'f', decimals);
 }
 
+// The same with a "+" on positive values (net buoyancy, attitudes).
+inline QString signedFixed(double v, int decimals) {
+  const QString t = fixed(v, decimals);
+  return (t.toDouble() > 0 ? QStringLiteral("+") : QString()) + t;
+}
+
 }  // namespace auv::ui

@@ -1,9 +1,15 @@
 #include "widgets/linked_chart_view.h"
 
+#include <QGraphicsLineItem>
+#include <QGraphicsRectItem>
+#include <QGraphicsScene>
+#include <QGraphicsSimpleTextItem>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QPen>
 #include <QWheelEvent>
 #include <QtCharts/QValueAxis>
+#include <algorithm>
 #include <cmath>
 
 namespace auv::ui {
@@ -15,6 +21,82 @@ LinkedChartView::LinkedChartView(QChart* chart, QWidget* parent) : QChartView(ch
   setRenderHint(QPainter::Antialiasing, false);
   setToolTip(tr("Wheel or +/-: zoom in time. Drag or arrow keys: move in time. Double-click or Home: whole log. "
                 "All three charts follow."));
+  // Move events without a button pressed drive the crosshair.
+  viewport()->setMouseTracking(true);
+  // Qt Charts stacks plot area (0), shades, grid, axes and series (4) upwards:
+  // bands sit on the plot background under the grid, the crosshair on top.
+  crosshair_ = new QGraphicsLineItem;
+  QPen pen(QColor(90, 90, 90));
+  pen.setWidth(1);
+  crosshair_->setPen(pen);
+  crosshair_->setZValue(20);
+  crosshair_->setVisible(false);
+  scene()->addItem(crosshair_);
+  connect(chart, &QChart::plotAreaChanged, this, [this] { layoutOverlays(); });
+  const auto axes = chart->axes(Qt::Horizontal);
+  if (auto* x = axes.isEmpty() ? nullptr : qobject_cast<QValueAxis*>(axes.first()))
+    connect(x, &QValueAxis::rangeChanged, this, [this] { layoutOverlays(); });
+}
+
+double LinkedChartView::xToPixel(double x) const {
+  const QRectF a = chart()->plotArea();
+  const auto [x0, x1] = xRange();
+  return a.left() + (x - x0) / (x1 - x0) * a.width();
+}
+
+void LinkedChartView::setBands(const std::vector<std::pair<double, double>>& bands, bool numbered) {
+  for (Band& b : bands_) {
+    delete b.rect;
+    delete b.label;
+  }
+  bands_.clear();
+  int k = 0;
+  for (const auto& [x0, x1] : bands) {
+    Band b{x0, x1, new QGraphicsRectItem, nullptr};
+    b.rect->setBrush(QColor(70, 170, 90, 45));
+    b.rect->setPen(Qt::NoPen);
+    b.rect->setZValue(1.5);
+    scene()->addItem(b.rect);
+    if (numbered) {
+      b.label = new QGraphicsSimpleTextItem(QString::number(++k));
+      b.label->setBrush(QColor(30, 110, 50));
+      b.label->setZValue(1.6);
+      scene()->addItem(b.label);
+    }
+    bands_.push_back(b);
+  }
+  layoutOverlays();
+}
+
+int LinkedChartView::visibleBandCount() const {
+  const auto [x0, x1] = xRange();
+  return static_cast<int>(std::count_if(bands_.begin(), bands_.end(), [&](const Band& b) { return b.x1 > x0 && b.x0 < x1; }));
+}
+
+void LinkedChartView::setCrosshair(std::optional<double> x) {
+  crosshair_x_ = x;
+  layoutOverlays();
+}
+
+void LinkedChartView::layoutOverlays() {
+  const QRectF a = chart()->plotArea();
+  const auto [x0, x1] = xRange();
+  const bool ok = a.width() > 0 && x1 > x0;
+  for (Band& b : bands_) {
+    const double l = std::max(xToPixel(b.x0), a.left()), r = std::min(xToPixel(b.x1), a.right());
+    const bool shown = ok && r > l;
+    b.rect->setVisible(shown);
+    if (b.label) b.label->setVisible(shown && r - l > b.label->boundingRect().width() + 2);
+    if (!shown) continue;
+    b.rect->setRect(QRectF(l, a.top(), r - l, a.height()));
+    if (b.label) b.label->setPos((l + r - b.label->boundingRect().width()) / 2, a.top() + 2);
+  }
+  const bool cross = ok && crosshair_x_ && *crosshair_x_ >= x0 && *crosshair_x_ <= x1;
+  crosshair_->setVisible(cross);
+  if (cross) {
+    const double px = std::round(xToPixel(*crosshair_x_)) + 0.5;
+    crosshair_->setLine(px, a.top(), px, a.bottom());
+  }
 }
 
 std::pair<double, double> LinkedChartView::xRange() const {
@@ -56,6 +138,11 @@ void LinkedChartView::mousePressEvent(QMouseEvent* e) {
 }
 
 void LinkedChartView::mouseMoveEvent(QMouseEvent* e) {
+  if (!dragging_) {
+    const QRectF a = chart()->plotArea();
+    if (a.contains(e->position())) emit hovered(chart()->mapToValue(e->position()).x());
+    else emit hoverLeft();
+  }
   if (dragging_) {
     const double w = chart()->plotArea().width();
     if (w > 0) {
@@ -76,6 +163,11 @@ void LinkedChartView::mouseReleaseEvent(QMouseEvent* e) {
     return;
   }
   QChartView::mouseReleaseEvent(e);
+}
+
+void LinkedChartView::leaveEvent(QEvent* e) {
+  emit hoverLeft();
+  QChartView::leaveEvent(e);
 }
 
 void LinkedChartView::mouseDoubleClickEvent(QMouseEvent* e) {

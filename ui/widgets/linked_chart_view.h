@@ -1,12 +1,22 @@
 #pragma once
 #include <QtCharts/QChartView>
+#include <optional>
+#include <vector>
+
+class QGraphicsLineItem;
+class QGraphicsRectItem;
+class QGraphicsSimpleTextItem;
 
 namespace auv::ui {
 
 // A chart view that does not change its own X axis: wheel (zoom about the
 // cursor), drag (pan), +/- and arrow keys, and double-click / Home (reset)
 // are turned into a requested X range, which the page applies to every
-// linked chart at once and then re-decimates.
+// linked chart at once and then re-decimates. Moving the mouse reports the X
+// value under it (hovered), so the page can draw one crosshair across all
+// linked charts. Shaded X bands (e.g. the analysis's operating segments)
+// and the crosshair are scene items kept in place on every axis or plot-area
+// change.
 class LinkedChartView : public QChartView {
   Q_OBJECT
  public:
@@ -16,9 +26,20 @@ class LinkedChartView : public QChartView {
   void zoomX(double factor, double centre);
   void panX(double fraction);  // of the visible width; + = later
 
+  // Shaded X intervals behind the curves; `numbered` draws 1, 2, ... on each.
+  void setBands(const std::vector<std::pair<double, double>>& bands, bool numbered);
+  int bandCount() const { return static_cast<int>(bands_.size()); }
+  // Bands at least partly inside the visible X range.
+  int visibleBandCount() const;
+  // A vertical line at X (nullopt hides it).
+  void setCrosshair(std::optional<double> x);
+  std::optional<double> crosshair() const { return crosshair_x_; }
+
  signals:
   void xRangeRequested(double x0, double x1);
   void resetRequested();
+  void hovered(double x);  // X value under the mouse, inside the plot area
+  void hoverLeft();
 
  protected:
   void wheelEvent(QWheelEvent* e) override;
@@ -27,9 +48,20 @@ class LinkedChartView : public QChartView {
   void mouseReleaseEvent(QMouseEvent* e) override;
   void mouseDoubleClickEvent(QMouseEvent* e) override;
   void keyPressEvent(QKeyEvent* e) override;
+  void leaveEvent(QEvent* e) override;
 
  private:
   std::pair<double, double> xRange() const;
+  double xToPixel(double x) const;
+  void layoutOverlays();
+  struct Band {
+    double x0, x1;
+    QGraphicsRectItem* rect;
+    QGraphicsSimpleTextItem* label;  // nullptr unless numbered
+  };
+  std::vector<Band> bands_;
+  QGraphicsLineItem* crosshair_ = nullptr;
+  std::optional<double> crosshair_x_;
   bool dragging_ = false;
   double drag_x_px_ = 0.0;
   std::pair<double, double> drag_range_;

@@ -36,6 +36,11 @@ int WeightMapModel::piecesToRemove() const {
 
 WeightMapModel makeWeightMapModel(const VehicleProfile& v, const std::vector<double>& installed_kg,
                                   const FirstMissionReport& report) {
+  return makeWeightMapModel(v, installed_kg, report.points);
+}
+
+WeightMapModel makeWeightMapModel(const VehicleProfile& v, const std::vector<double>& installed_kg,
+                                  const std::vector<PointRecommendation>& changes) {
   WeightMapModel m;
   m.length_m = v.hull.length_m;
   m.diameter_m = v.hull.diameter_m;
@@ -50,7 +55,7 @@ WeightMapModel makeWeightMapModel(const VehicleProfile& v, const std::vector<dou
     p.x_m = v.points[i].position_m.x();
     p.y_m = v.points[i].position_m.y();
     p.installed_kg = i < installed_kg.size() ? installed_kg[i] : 0.0;
-    for (const auto& r : report.points) {
+    for (const auto& r : changes) {
       if (r.name == p.name) {
         p.change = r.pieces;
         p.change_kg = r.add_kg;

@@ -50,5 +50,8 @@ struct WeightMapModel {
 // 10 px, as for a glider's grams of lead; then the largest is drawn 24 px.
 WeightMapModel makeWeightMapModel(const VehicleProfile& vehicle, const std::vector<double>& installed_kg,
                                   const FirstMissionReport& report);
+// The same from any per-point change (a pre-mission plan's points).
+WeightMapModel makeWeightMapModel(const VehicleProfile& vehicle, const std::vector<double>& installed_kg,
+                                  const std::vector<PointRecommendation>& changes);
 
 }  // namespace auv::ui

@@ -21,53 +21,64 @@ void WeightMapWidget::setModel(WeightMapModel model) {
   update();
 }
 
+namespace {
+
+// One label in a band above or below the hull: the rows nearest the hull
+// fill first, and a label that would touch another (or a fixed caption)
+// goes one row further out, so no two texts ever overlap.
+struct LabelSlot {
+  QString text;
+  double width = 0.0;
+  double x = 0.0;  // left edge
+  bool above = true;
+  int row = 0;
+};
+
+void placeInRows(std::vector<LabelSlot*>& side, std::vector<std::vector<std::pair<double, double>>>& rows) {
+  constexpr double kGap = 14.0;
+  std::sort(side.begin(), side.end(), [](const LabelSlot* a, const LabelSlot* b) { return a->x < b->x; });
+  for (LabelSlot* l : side) {
+    for (int r = 0;; ++r) {
+      if (static_cast<std::size_t>(r) >= rows.size()) rows.emplace_back();
+      bool free = true;
+      for (const auto& [a, b] : rows[static_cast<std::size_t>(r)])
+        if (l->x < b + kGap && l->x + l->width > a - kGap) free = false;
+      if (free) {
+        rows[static_cast<std::size_t>(r)].emplace_back(l->x, l->x + l->width);
+        l->row = r;
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace
+
 void WeightMapWidget::paintEvent(QPaintEvent*) {
   QPainter p(this);
   p.setRenderHint(QPainter::Antialiasing);
   p.fillRect(rect(), palette().base());
+  label_rects_.clear();
+  hull_rect_ = QRectF();
   if (model_.length_m <= 0) return;
   // Hull outline spans x in [-L/2, L/2]; the hull is drawn wider than true
-  // scale across (y) so that the points and their pieces stay readable.
+  // scale across (y) so that the points and their pieces stay readable. The
+  // point labels sit in bands above and below the hull, never on it.
   const double margin = 40;
   const double sx = (width() - 2 * margin) / model_.length_m;
-  const double half_w = std::min(height() * 0.32, width() * 0.12);
-  const double sy = half_w / (model_.diameter_m / 2.0);
+  const double cx = width() / 2.0;
   const double ymax_pts = [&] {
     double m = model_.diameter_m / 2.0;
     for (const auto& pt : model_.points) m = std::max(m, std::abs(pt.y_m));
     return m;
   }();
-  const double syp = half_w * 0.8 / ymax_pts;  // points scaled to sit inside the hull
-  const QPointF c(width() / 2.0, height() / 2.0);
-  auto toScreen = [&](double x, double y, double scale_y) { return QPointF(c.x() + x * sx, c.y() + y * scale_y); };
-
-  QPainterPath hull;
-  const double L = model_.length_m * sx;
-  hull.addRoundedRect(QRectF(c.x() - L / 2, c.y() - half_w, L, 2 * half_w), half_w, half_w);
-  p.setPen(QPen(palette().text().color(), 2));
-  p.setBrush(QColor(230, 236, 242));
-  p.drawPath(hull);
-  p.drawText(QRectF(c.x() + L / 2 - 70, c.y() - half_w - 24, 70, 20), Qt::AlignRight, tr("bow ▶"));
-  p.drawText(QRectF(c.x() - L / 2, c.y() + half_w + 4, 120, 20), Qt::AlignLeft, tr("starboard ▼"));
-
-  // Centre of buoyancy marker.
-  const QPointF cb = toScreen(model_.cb_x_m, model_.cb_y_m, sy);
-  p.setPen(QPen(QColor(30, 90, 200), 2));
-  p.drawLine(cb + QPointF(-8, 0), cb + QPointF(8, 0));
-  p.drawLine(cb + QPointF(0, -8), cb + QPointF(0, 8));
-  p.drawText(cb + QPointF(6, -6), tr("CB"));
-
-  const double unit = model_.px_per_sqrt_kg;
-  // Height reserved for a row of squares: the largest square, at least 15 px.
-  double row_h = 15.0;
-  for (const auto& pt : model_.points)
-    for (const auto& b : pt.blocks()) row_h = std::max(row_h, unit * std::sqrt(b.mass_kg));
-  // Points at the same x and y in this top view (e.g. a glider's upper and
-  // lower aft bottles) are spread apart on screen so each stays readable.
-  std::vector<QPointF> at(model_.points.size());
+  // Screen offset of each point from the centreline in units of the hull's
+  // half width: points scaled to sit inside the hull, and points at the same
+  // x and y in this top view (e.g. a glider's upper and lower aft bottles)
+  // spread apart so each stays readable.
+  std::vector<double> across(model_.points.size());
   for (std::size_t i = 0; i < model_.points.size(); ++i) {
     const auto& pt = model_.points[i];
-    at[i] = toScreen(pt.x_m, pt.y_m, syp);
     int before = 0, same = 0;
     for (std::size_t j = 0; j < model_.points.size(); ++j) {
       const auto& o = model_.points[j];
@@ -76,27 +87,90 @@ void WeightMapWidget::paintEvent(QPaintEvent*) {
         if (j < i) ++before;
       }
     }
-    at[i].ry() += (before - (same - 1) / 2.0) * 0.9 * half_w;
+    across[i] = 0.8 * pt.y_m / ymax_pts + (before - (same - 1) / 2.0) * 0.9;
   }
+
+  // Labels: "<point>: <change> (<installed> → <after>)", placed in rows.
+  const QFontMetricsF fm(font());
+  const double label_h = fm.height() + 4;
+  std::vector<LabelSlot> labels(model_.points.size());
+  std::vector<LabelSlot*> top, bottom;
+  for (std::size_t i = 0; i < model_.points.size(); ++i) {
+    const auto& pt = model_.points[i];
+    const bool g = model_.grams;
+    const double after = pt.installed_kg + pt.change_kg;
+    const QString amounts = g ? QString("%1 → %2").arg(std::round(pt.installed_kg * 1000.0), 0, 'f', 0)
+                                    .arg(std::round(after * 1000.0), 0, 'f', 0)
+                              : QString("%1 → %2").arg(pt.installed_kg, 0, 'f', 1).arg(after, 0, 'f', 1);
+    LabelSlot& l = labels[i];
+    l.text = QString("%1: %2 (%3)").arg(QString::fromStdString(pt.label), massText(pt.change_kg, g, true), amounts);
+    l.width = fm.horizontalAdvance(l.text) + 6;
+    l.x = std::clamp(cx + pt.x_m * sx - l.width / 2, 2.0, std::max(2.0, width() - 2.0 - l.width));
+    l.above = across[i] < 0;
+    (l.above ? top : bottom).push_back(&l);
+  }
+  // Fixed captions take their place in the first row of each band.
+  const QString bow = tr("bow ▶"), stbd = tr("starboard ▼");
+  const double bow_w = fm.horizontalAdvance(bow) + 6, stbd_w = fm.horizontalAdvance(stbd) + 6;
+  std::vector<std::vector<std::pair<double, double>>> rows_top{{{width() - margin - bow_w, width() - margin}}};
+  std::vector<std::vector<std::pair<double, double>>> rows_bottom{{{margin, margin + stbd_w}}};
+  placeInRows(top, rows_top);
+  placeInRows(bottom, rows_bottom);
+  const double band_top = static_cast<double>(rows_top.size()) * label_h + 8;
+  const double band_bottom = static_cast<double>(rows_bottom.size()) * label_h + 8;
+  const double half_w = std::max(20.0, std::min(width() * 0.12, (height() - band_top - band_bottom) / 2.0));
+  const QPointF c(cx, band_top + (height() - band_top - band_bottom) / 2.0);
+  auto labelRect = [&](const LabelSlot& l) {
+    const double y = l.above ? c.y() - half_w - 6 - (l.row + 1) * label_h : c.y() + half_w + 6 + l.row * label_h;
+    return QRectF(l.x, y, l.width, label_h);
+  };
+
+  QPainterPath hull;
+  const double L = model_.length_m * sx;
+  hull.addRoundedRect(QRectF(c.x() - L / 2, c.y() - half_w, L, 2 * half_w), half_w, half_w);
+  p.setPen(QPen(palette().text().color(), 2));
+  p.setBrush(QColor(230, 236, 242));
+  p.drawPath(hull);
+  p.drawText(labelRect({bow, bow_w, width() - margin - bow_w, true, 0}), Qt::AlignCenter, bow);
+  p.drawText(labelRect({stbd, stbd_w, margin, false, 0}), Qt::AlignCenter, stbd);
+
+  // Centre of buoyancy marker.
+  const QPointF cb(c.x() + model_.cb_x_m * sx, c.y() + model_.cb_y_m * half_w / (model_.diameter_m / 2.0));
+  p.setPen(QPen(QColor(30, 90, 200), 2));
+  p.drawLine(cb + QPointF(-8, 0), cb + QPointF(8, 0));
+  p.drawLine(cb + QPointF(0, -8), cb + QPointF(0, 8));
+  p.drawText(cb + QPointF(6, -6), tr("CB"));
+
+  std::vector<QPointF> at(model_.points.size());
+  for (std::size_t i = 0; i < model_.points.size(); ++i) {
+    at[i] = QPointF(c.x() + model_.points[i].x_m * sx, c.y() + across[i] * half_w);
+  }
+  // Leader lines first, so circles and squares sit on top of them.
+  p.setPen(QPen(QColor(120, 120, 120), 1, Qt::DotLine));
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const QRectF r = labelRect(labels[i]);
+    const QPointF anchor(std::clamp(at[i].x(), r.left() + 4, r.right() - 4), labels[i].above ? r.bottom() : r.top());
+    p.drawLine(anchor, at[i]);
+  }
+
+  const double unit = model_.px_per_sqrt_kg;
   QFont small = font();
   small.setPointSizeF(font().pointSizeF() * 0.85);
   for (std::size_t i = 0; i < model_.points.size(); ++i) {
     const auto& pt = model_.points[i];
-    const bool below = at[i].y() >= c.y();  // labels away from the centreline
     p.setPen(QPen(Qt::black, 1));
     p.setBrush(QColor(150, 150, 150));
     const double installed = model_.grams ? pt.installed_kg * 30.0 : pt.installed_kg;  // grams read like kg
     const double r_inst = 6 + (installed > 0 ? std::min(std::sqrt(installed) * 2, 14.0) : 0);
     p.drawEllipse(at[i], r_inst, r_inst);
-    // Pieces to add/remove in a row beside the point.
+    // Pieces to add/remove in a row to the right of the point, centred on it.
     double x = at[i].x() + r_inst + 4;
-    const double yrow = at[i].y() + (below ? 4 : -4 - row_h);
     for (const auto& b : pt.blocks()) {
       const double side = std::max(5.0, unit * std::sqrt(b.mass_kg));
       const QColor col = b.add ? QColor(46, 160, 67) : QColor(210, 50, 50);
       p.setPen(QPen(Qt::black, 1));
       p.setBrush(col);
-      const QRectF sq(x, below ? yrow : yrow + row_h - side, side, side);
+      const QRectF sq(x, at[i].y() - side / 2, side, side);
       p.drawRect(sq);
       x += side + 3;
       if (b.pieces > 1) {
@@ -108,11 +182,15 @@ void WeightMapWidget::paintEvent(QPaintEvent*) {
         p.setFont(font());
       }
     }
-    const QString text = QString("%1: %2").arg(QString::fromStdString(pt.label), massText(pt.change_kg, model_.grams, true));
-    p.setPen(palette().text().color());
-    const double ty = below ? at[i].y() + row_h + 22 : at[i].y() - row_h - 10;
-    p.drawText(QPointF(at[i].x() - 40, ty), text);
   }
+  p.setPen(palette().text().color());
+  label_rects_.clear();
+  for (const auto& l : labels) {
+    label_rects_.push_back(labelRect(l));
+    p.fillRect(label_rects_.back(), palette().base());  // a leader line passing behind stays out of the text
+    p.drawText(label_rects_.back(), Qt::AlignCenter, l.text);
+  }
+  hull_rect_ = hull.boundingRect();
 }
 
 }  // namespace auv::ui

@@ -1,5 +1,7 @@
 #pragma once
+#include <QRectF>
 #include <QWidget>
+#include <vector>
 
 #include "widgets/weight_map_model.h"
 
@@ -7,13 +9,18 @@ namespace auv::ui {
 
 // Top-down view of the vehicle (bow to the right, starboard down, as seen
 // from above) with each adjustment point where it sits: grey = installed,
-// green squares = pieces to add, red = pieces to remove, sized by mass.
+// green squares = pieces to add, red = pieces to remove, sized by mass. Each
+// point's label ("<point>: <change> (<now> → <after>)") sits in a band above
+// or below the hull with a leader line, in rows that never overlap.
 class WeightMapWidget : public QWidget {
   Q_OBJECT
  public:
   explicit WeightMapWidget(QWidget* parent = nullptr);
   void setModel(WeightMapModel model);
   const WeightMapModel& model() const { return model_; }
+  // Where the last paint put the point labels (model order) and the hull.
+  const std::vector<QRectF>& labelRects() const { return label_rects_; }
+  QRectF hullRect() const { return hull_rect_; }
   QSize sizeHint() const override { return {760, 300}; }
 
  protected:
@@ -21,6 +28,8 @@ class WeightMapWidget : public QWidget {
 
  private:
   WeightMapModel model_;
+  std::vector<QRectF> label_rects_;
+  QRectF hull_rect_;
 };
 
 }  // namespace auv::ui

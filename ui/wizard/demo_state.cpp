@@ -71,6 +71,7 @@ std::size_t writeDemoSurveyLog(const std::string& resource_dir, const std::strin
   add("roll", "deg", tr.roll_rad, deg);
   add("speed", "m/s", tr.speed_mps, 1.0);
   add("prop_rpm", "rpm", tr.prop_rpm, 1.0);
+  add("elevator", "deg", tr.elevator_rad, deg);  // the analysis needs it for net buoyancy and CG x
   add("temperature", "degC", tr.temperature_degC, 1.0);
   add("salinity", "PSU", tr.salinity_psu, 1.0);
   writeInterchangeCsv(log, log_path);

@@ -1,6 +1,9 @@
 #include "wizard/history_save.h"
 
+#include <cmath>
+
 #include "common/input_error.h"
+#include "firstmission/hugin_first_mission.h"
 #include "history/transaction.h"
 #include "wizard/session_json.h"
 
@@ -94,6 +97,66 @@ RecordId saveMissionToHistory(HistoryStore& store, const WizardState& s, TimePoi
   const RecordId id = store.importMissionFile(s.configuration_id, s.log_file, missionSummaryJson(s), now);
   tx.commit();
   return id;
+}
+
+PreMissionSaveIds savePreMissionToHistory(HistoryStore& store, const WizardState& s, const PlanBasis& basis,
+                                          TimePoint now) {
+  if (!s.plan || !s.vehicle) throw InputError("plan", "nothing planned yet", "go back to the pre-mission page");
+  const VehicleProfile& v = *s.vehicle;
+  const PreMissionPlan& plan = *s.plan;
+  const std::vector<double> planned = installedAfterPlan(basis.installed_kg, plan);
+  const std::vector<double>& actual = s.actually_installed_kg.size() == planned.size() ? s.actually_installed_kg : planned;
+  PreMissionSaveIds ids;
+  Transaction tx(store.database());
+  ensureConfiguration(store, s, now);
+  std::optional<RecordId> analysis_id = basis.analysis_id;
+  if (s.mode == SessionMode::kPostMission && s.log) {
+    ids.mission = saveMissionToHistory(store, s, now);
+    // The post-mission save may have stored this session's analysis with
+    // the mission: the plan then links to that record.
+    if (const auto a = store.latestAnalysis(s.configuration_id, now); a && a->mission_id == ids.mission) analysis_id = a->id;
+  }
+
+  // The next mission's water: entered now, or the last mission's CTD with
+  // its own date, so that its age (thesis §5.5.3) stays true.
+  const PlannedWater& w = plan.at_points.front().water;
+  WaterCondition water;
+  const bool operator_values = s.next_water_source == "operator";
+  water.measured_at = operator_values ? now : basis.measured_at.value_or(now);
+  water.temperature_degC = w.temperature_degC;
+  water.salinity_psu = w.salinity_psu;
+  water.depth_m = w.depth_m;
+  water.density_kg_m3 = plan.at_points.front().state.density_kgm3;
+  water.source = operator_values ? "operator" : "mission";
+  ids.water = store.addWaterCondition(s.configuration_id, water);
+
+  Recommendation rec;
+  rec.at = now;
+  rec.analysis_id = analysis_id;
+  rec.policy = toString(plan.policy);
+  rec.recommendation = preMissionReportJson(s, basis, toIsoUtc(now));
+  rec.accepted = true;
+  ids.recommendation = store.addRecommendation(s.configuration_id, rec);
+
+  InstalledState st;
+  st.installed_at = now;
+  st.recommendation_id = ids.recommendation;
+  bool differs = false;
+  double change = 0.0;
+  for (std::size_t i = 0; i < v.points.size(); ++i) {
+    InstalledPoint p{v.points[i].name, actual[i], {}};
+    const std::vector<int> counts = decomposeInstalled(actual[i], plan.piece_sizes_kg, v.points[i].name);
+    for (std::size_t k = counts.size(); k-- > 0;)
+      for (int n = 0; n < counts[k]; ++n) p.pieces_kg.push_back(plan.piece_sizes_kg[k]);
+    st.points.push_back(p);
+    differs = differs || std::abs(actual[i] - planned[i]) > 5e-5;
+    change += actual[i] - (i < basis.installed_kg.size() ? basis.installed_kg[i] : 0.0);
+  }
+  if (basis.total_mass_kg) st.total_mass_kg = std::round((*basis.total_mass_kg + change) * 1e4) / 1e4;
+  st.note = std::string("pre-mission plan (") + rec.policy + (differs ? "), installed differently" : "), installed as planned");
+  ids.installed = store.addInstalledState(s.configuration_id, st);
+  tx.commit();
+  return ids;
 }
 
 }  // namespace auv::ui

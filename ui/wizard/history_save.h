@@ -4,6 +4,7 @@
 // together or not at all (history/transaction.h), so a failure halfway - a
 // full disk, a duplicate log - never leaves half a session in the history.
 #include "history/store.h"
+#include "wizard/pre_mission_inputs.h"
 #include "wizard/wizard_state.h"
 
 namespace auv::ui {
@@ -19,5 +20,18 @@ RecordId saveMissionToHistory(HistoryStore& store, const WizardState& s, TimePoi
 
 // The read summary stored with a mission: format, rows, channels, what was skipped.
 nlohmann::json missionSummaryJson(const WizardState& s);
+
+// Pre mission (and a post-mission session that went on to plan): the
+// mission if this session imported one, the next mission's water, the plan
+// as an accepted recommendation (linked to its analysis) and what the
+// technician actually installed, with its kit pieces, all in ONE transaction.
+// Throws InputError (nothing saved) when a record is refused or the actually
+// installed masses are not sums of kit pieces.
+struct PreMissionSaveIds {
+  std::optional<RecordId> mission;
+  RecordId water = 0, recommendation = 0, installed = 0;
+};
+PreMissionSaveIds savePreMissionToHistory(HistoryStore& store, const WizardState& s, const PlanBasis& basis,
+                                          TimePoint now);
 
 }  // namespace auv::ui

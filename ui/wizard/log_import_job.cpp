@@ -4,6 +4,7 @@
 #include <QtConcurrent/QtConcurrent>
 
 #include "common/input_error.h"
+#include "missionlog/delimited_text_reader.h"
 #include "missionlog/log_reader.h"
 #include "missionlog/read_options.h"
 
@@ -43,7 +44,7 @@ void LogImportJob::poll() {
   }
 }
 
-void LogImportJob::start(const QString& path) {
+void LogImportJob::start(const QString& path, std::optional<ColumnMapping> mapping) {
   if (running()) return;
   cancel_ = std::make_shared<std::atomic<bool>>(false);
   permille_ = std::make_shared<std::atomic<int>>(0);
@@ -52,13 +53,19 @@ void LogImportJob::start(const QString& path) {
   const std::size_t block = block_bytes_;
   auto cancel = cancel_;
   auto permille = permille_;
-  watcher_.setFuture(QtConcurrent::run([file, block, cancel, permille]() {
+  watcher_.setFuture(QtConcurrent::run([file, block, cancel, permille, mapping = std::move(mapping)]() {
     LogImportOutcome out;
     QElapsedTimer clock;
     clock.start();
     try {
       const LogReaderRegistry registry = LogReaderRegistry::withBuiltinReaders();
       const LogReader* reader = registry.find(file);
+      std::optional<DelimitedTextReader> mapped;
+      if (mapping && (!reader || reader->formatName() == DelimitedTextReader().formatName())) {
+        mapped.emplace(*mapping);
+        reader = &*mapped;
+        out.mapped = true;
+      }
       if (!reader) {
         std::string known;
         for (const auto& n : registry.formatNames()) known += (known.empty() ? "" : ", ") + n;

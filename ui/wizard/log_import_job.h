@@ -8,8 +8,10 @@
 #include <QTimer>
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "missionlog/column_mapping.h"
 #include "missionlog/mission_log.h"
 #include "missionlog/read_report.h"
 
@@ -21,6 +23,7 @@ struct LogImportOutcome {
   ReadReport report;
   std::string format;
   std::string error;  // InputError text when failed
+  bool mapped = false;  // read through a column mapping
   double seconds = 0.0;
 };
 
@@ -30,8 +33,10 @@ class LogImportJob : public QObject {
   explicit LogImportJob(QObject* parent = nullptr);
   ~LogImportJob() override;
 
-  // Starts reading `path`; ignored while a read is running.
-  void start(const QString& path);
+  // Starts reading `path`; ignored while a read is running. With a column
+  // mapping, a file the registry takes for vendor text (or does not
+  // recognise at all) is read through it; other formats ignore it.
+  void start(const QString& path, std::optional<ColumnMapping> mapping = std::nullopt);
   void cancel();
   bool running() const;
   // Smaller blocks = more frequent progress (tests; the reader's default is 4 MiB).

@@ -8,12 +8,16 @@
 
 #include "common/input_error.h"
 #include "history/store.h"
+#include "pages/adjustment_page.h"
 #include "pages/crane_weighing_page.h"
 #include "pages/deviation_plots_page.h"
 #include "pages/first_mission_result_page.h"
 #include "pages/log_import_page.h"
+#include "pages/model_check_page.h"
+#include "pages/pre_mission_page.h"
 #include "pages/roll_test_page.h"
 #include "pages/start_page.h"
+#include "pages/summary_page.h"
 #include "pages/tank_weighing_page.h"
 #include "pages/vehicle_page.h"
 #include "pages/water_page.h"
@@ -48,6 +52,10 @@ OperatorWizard::OperatorWizard(WizardState state, QWidget* parent)
   setPage(kFirstMissionResult, new FirstMissionResultPage(state_));
   setPage(kLogImport, new LogImportPage(state_));
   setPage(kDeviationPlots, new DeviationPlotsPage(state_));
+  setPage(kPreMission, new PreMissionPage(state_));
+  setPage(kAdjustment, new AdjustmentPage(state_));
+  setPage(kSummary, new SummaryPage(state_));
+  setPage(kModelCheck, new ModelCheckPage(state_));
   setStartId(kStart);
 
   connect(this, &QWizard::helpRequested, this, &OperatorWizard::showHelp);

@@ -96,11 +96,31 @@ nlohmann::json sessionToJson(const WizardState& s, int page_id, const std::strin
                         {"area", s.area},
                         {"water_type", s.water_type},
                         {"in_history", s.configuration_in_history}};
-  j["mode"] = s.mode == SessionMode::kPostMission ? "post_mission" : "first_mission";
+  j["mode"] = s.mode == SessionMode::kPostMission  ? "post_mission"
+              : s.mode == SessionMode::kPreMission ? "pre_mission"
+                                                   : "first_mission";
   j["crane"] = craneInputToJson(s.crane, s.vehicle ? s.vehicle->id : "");
   // Only a glider session has a tank weighing worth keeping (and valid to parse back).
   if (s.isGlider() && s.tank.readings.dry_mass_kg >= 1.0) j["tank"] = tankWeighingToJson(s.tank, s.tank_water_salt);
   j["log_file"] = s.log_file;
+  // Pre mission: the next mission's water and policy, the ticks and the
+  // masses actually installed (the plan itself is recomputed from them).
+  if (s.next_water) {
+    j["pre_mission"] = {{"water",
+                         {{"temperature_degC", s.next_water->temperature_degC},
+                          {"salinity_psu", s.next_water->salinity_psu},
+                          {"depth_m", s.next_water->depth_m},
+                          {"latitude_deg", s.next_water->latitude_deg}}},
+                        {"deepest_m", s.next_deepest_m},
+                        {"water_source", s.next_water_source},
+                        {"policy", toString(s.policy)},
+                        {"checklist_done", s.checklist_done},
+                        {"actually_installed_kg", s.actually_installed_kg}};
+  }
+  // Post mission: what was installed during the logged mission and the
+  // model-check terms accepted (analysis and check are recomputed from the log).
+  j["mission_installed_kg"] = s.mission_installed_kg;
+  j["accepted_terms"] = s.accepted_terms;
   return j;
 }
 
@@ -127,10 +147,12 @@ SavedSession sessionFromJson(const std::string& json_text, const std::string& fi
   s.water_type = c.text("water_type", "");
   s.configuration_in_history = c.node().value("in_history", false);
   const std::string mode = root.text("mode", "first_mission");
-  if (mode != "first_mission" && mode != "post_mission") {
-    root.fail("mode", "unknown mode '" + mode + "'", "use first_mission or post_mission");
+  if (mode != "first_mission" && mode != "post_mission" && mode != "pre_mission") {
+    root.fail("mode", "unknown mode '" + mode + "'", "use first_mission, post_mission or pre_mission");
   }
-  s.mode = mode == "post_mission" ? SessionMode::kPostMission : SessionMode::kFirstMission;
+  s.mode = mode == "post_mission"  ? SessionMode::kPostMission
+           : mode == "pre_mission" ? SessionMode::kPreMission
+                                   : SessionMode::kFirstMission;
 
   const JsonReader cr = root.child("crane");
   auto& w = s.crane.weighing;
@@ -154,6 +176,33 @@ SavedSession sessionFromJson(const std::string& json_text, const std::string& fi
     s.tank_water_salt = root.child("tank").child("tank").text("water", "fresh") == "salt";
   }
   s.log_file = root.text("log_file", "");
+  if (root.has("pre_mission")) {
+    const JsonReader pm = root.child("pre_mission");
+    const JsonReader pw = pm.child("water");
+    s.next_water = PlannedWater{pw.number("temperature_degC", 10.0), pw.number("salinity_psu", 35.0),
+                                pw.number("depth_m", 0.0), pw.number("latitude_deg", 45.0)};
+    s.next_deepest_m = pm.number("deepest_m", 0.0);
+    s.next_water_source = pm.text("water_source", "last mission");
+    s.policy = planPolicyFromString(pm.text("policy", "exact"));
+    if (pm.has("actually_installed_kg")) s.actually_installed_kg = pm.numbers("actually_installed_kg");
+    if (pm.has("checklist_done")) {
+      const nlohmann::json& done = pm.node().at("checklist_done");
+      if (!done.is_array()) pm.fail("checklist_done", "must be a list of true/false", "discard the session");
+      for (const auto& d : done) {
+        if (!d.is_boolean()) pm.fail("checklist_done", "must be a list of true/false", "discard the session");
+        s.checklist_done.push_back(d.get<bool>());
+      }
+    }
+  }
+  if (root.has("mission_installed_kg")) s.mission_installed_kg = root.numbers("mission_installed_kg");
+  if (root.has("accepted_terms")) {
+    const nlohmann::json& terms = root.node().at("accepted_terms");
+    if (!terms.is_array()) root.fail("accepted_terms", "must be a list of term names", "discard the session");
+    for (const auto& t : terms) {
+      if (!t.is_string()) root.fail("accepted_terms", "must be a list of term names", "discard the session");
+      s.accepted_terms.push_back(t.get<std::string>());
+    }
+  }
   return out;
 }
 

@@ -59,6 +59,8 @@ struct WizardState {
   // Pre mission: the next mission's water and policy, the plan, what the
   // technician ticked off and what was actually installed (saved to history).
   std::optional<PlannedWater> next_water;
+  double next_deepest_m = 0.0;                       // deepest planned point; <= operating depth: none
+  std::string next_water_source = "last mission";  // or "operator" (the values entered)
   PlanPolicy policy = PlanPolicy::Exact;
   std::optional<PreMissionPlan> plan;
   std::vector<bool> checklist_done;

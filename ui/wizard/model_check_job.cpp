@@ -1,0 +1,42 @@
+#include "wizard/model_check_job.h"
+
+#include <QtConcurrent/QtConcurrent>
+
+#include "common/input_error.h"
+
+namespace auv::ui {
+
+ModelCheckJob::ModelCheckJob(QObject* parent) : QObject(parent) {
+  connect(&watcher_, &QFutureWatcher<ModelCheckOutcome>::finished, this, [this] { emit finished(watcher_.result()); });
+}
+
+ModelCheckJob::~ModelCheckJob() { waitForFinished(); }
+
+bool ModelCheckJob::running() const { return watcher_.isRunning(); }
+
+void ModelCheckJob::waitForFinished() { watcher_.waitForFinished(); }
+
+void ModelCheckJob::start(std::shared_ptr<const MissionLog> log, VehicleProfile vehicle, std::string resource_dir,
+                          discrepancy::CheckSetup setup, discrepancy::ModelCheckOptions options) {
+  if (running() || !log) return;
+  watcher_.setFuture(QtConcurrent::run([log, vehicle = std::move(vehicle), dir = std::move(resource_dir),
+                                        setup = std::move(setup), options = std::move(options)]() {
+    ModelCheckOutcome out;
+    out.log = log;
+    try {
+      const std::unique_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(*log, vehicle, dir, setup);
+      out.description = model->description();
+      out.result = discrepancy::runModelCheck(*model, options);
+      out.overlay = discrepancy::simulationOverlay(*model, *out.result, *log);
+      out.ok = true;
+    } catch (const std::exception& e) {
+      // InputError (the log lacks what the model needs) and anything else:
+      // the page says why; the rest of the wizard goes on without the check.
+      out.ok = false;
+      out.error = e.what();
+    }
+    return out;
+  }));
+}
+
+}  // namespace auv::ui
