@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "missionlog/detail/ascii_text.h"
 #include "missionlog/log_table.h"
 #include "missionlog/unit_conversion.h"
 #include "missionlog/unit_spelling.h"
@@ -9,11 +10,7 @@
 namespace auv {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
+using detail::trim;
 
 struct AliasEntry {
   std::string_view key;

@@ -7,6 +7,9 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "missionlog/detail/report_problem.h"
+#include "missionlog/detail/table_rows.h"
+#include "missionlog/detail/time_order.h"
 #include "missionlog/iso8601.h"
 #include "missionlog/unit_conversion.h"
 
@@ -18,47 +21,21 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kEpochMin = -2208988800.0;  // 1900-01-01T00:00:00Z
 constexpr double kEpochMax = 7258118400.0;   // 2200-01-01T00:00:00Z
 
-std::string timeText(double t, bool epoch) {
-  return epoch ? formatIso8601(t, 3) : numberText(t) + " s";
-}
-
 class TableTidier {
  public:
   TableTidier(LogTable& t, const ReadOptions& o, ReadReport& r) : t_(t), opt_(o), rep_(r) {}
   void run();
 
  private:
-  InputLocation rowAt(std::size_t i) const {
-    if (!t_.record_dimension.empty()) return {t_.file, 0, 0};
-    return {t_.file, i < t_.row_where.size() ? static_cast<long>(t_.row_where[i]) : 0, 0};
-  }
-  // "record sg_data_point[17]: " for NetCDF rows, "" for text lines (their
-  // line is in the location).
-  std::string rowPrefix(std::size_t i) const {
-    if (t_.record_dimension.empty() || i >= t_.row_where.size()) return {};
-    return t_.record_dimension + "[" + std::to_string(t_.row_where[i]) + "]: ";
-  }
-  std::string rowName(std::size_t i) const {
-    if (i >= t_.row_where.size()) return "?";
-    if (!t_.record_dimension.empty()) return t_.record_dimension + "[" + std::to_string(t_.row_where[i]) + "]";
-    return "line " + std::to_string(t_.row_where[i]);
-  }
+  InputLocation rowAt(std::size_t i) const { return detail::rowLocation(t_, i); }
+  std::string rowPrefix(std::size_t i) const { return detail::rowPrefix(t_, i); }
   void problem(ReadProblemKind kind, InputLocation where, std::string column, std::string what,
                std::string fix) {
-    ReadProblem p;
-    p.kind = kind;
-    p.where = std::move(where);
-    p.column = std::move(column);
-    p.problem = std::move(what);
-    p.fix = std::move(fix);
-    rep_.add(std::move(p), opt_.max_problems_per_kind);
+    detail::reportProblem(rep_, opt_, kind, std::move(where), std::move(column), std::move(what), std::move(fix));
   }
   void convertUnits();
   void checkPhysicalLimits(TableColumn& c);
   void dropRowsWithoutTime();
-  void keepRows(const std::vector<char>& keep);
-  void repairTimeOrder();
-  void noteGaps();
 
   LogTable& t_;
   const ReadOptions& opt_;
@@ -172,25 +149,6 @@ void TableTidier::checkPhysicalLimits(TableColumn& c) {
   rep_.counts[static_cast<std::size_t>(ReadProblemKind::kValueOutOfRange)] += static_cast<long long>(bad) - 1;
 }
 
-void TableTidier::keepRows(const std::vector<char>& keep) {
-  std::size_t w = 0;
-  const std::size_t n = t_.time.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!keep[i]) continue;
-    if (w != i) {
-      t_.time[w] = t_.time[i];
-      if (i < t_.row_where.size()) t_.row_where[w] = t_.row_where[i];
-      for (auto& c : t_.columns)
-        if (!c.values.empty()) c.values[w] = c.values[i];
-    }
-    ++w;
-  }
-  t_.time.resize(w);
-  if (t_.row_where.size() > w) t_.row_where.resize(w);
-  for (auto& c : t_.columns)
-    if (!c.values.empty()) c.values.resize(w);
-}
-
 void TableTidier::dropRowsWithoutTime() {
   const std::size_t n = t_.time.size();
   std::vector<char> keep(n, 1);
@@ -214,106 +172,15 @@ void TableTidier::dropRowsWithoutTime() {
     any = true;
     ++rep_.rows_skipped;
   }
-  if (any) keepRows(keep);
-}
-
-// The interchange reader's rule: keep the longest non-decreasing run of rows
-// (one wild time stamp costs one row), then merge rows that share a time.
-void TableTidier::repairTimeOrder() {
-  std::vector<double>& t = t_.time;
-  const std::size_t n = t.size();
-  bool ordered = true, strictly = true;
-  for (std::size_t i = 1; i < n; ++i) {
-    if (t[i] < t[i - 1]) ordered = false;
-    if (!(t[i] > t[i - 1])) strictly = false;
-  }
-  if (strictly) return;
-  std::vector<char> keep(n, 1);
-  if (!ordered) {
-    std::fill(keep.begin(), keep.end(), 0);
-    std::vector<std::size_t> tails;
-    std::vector<std::ptrdiff_t> parent(n, -1);
-    for (std::size_t i = 0; i < n; ++i) {
-      auto it = std::upper_bound(tails.begin(), tails.end(), t[i],
-                                 [&](double v, std::size_t idx) { return v < t[idx]; });
-      const auto k = static_cast<std::size_t>(it - tails.begin());
-      parent[i] = k ? static_cast<std::ptrdiff_t>(tails[k - 1]) : -1;
-      if (it == tails.end()) tails.push_back(i);
-      else *it = i;
-    }
-    for (auto i = static_cast<std::ptrdiff_t>(tails.back()); i >= 0; i = parent[static_cast<std::size_t>(i)])
-      keep[static_cast<std::size_t>(i)] = 1;
-    std::ptrdiff_t lastKept = -1;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (keep[i]) {
-        lastKept = static_cast<std::ptrdiff_t>(i);
-        continue;
-      }
-      ++rep_.rows_skipped;
-      std::string what = rowPrefix(i) + "time " + timeText(t[i], t_.epoch) + " breaks the increasing order";
-      if (lastKept >= 0) {
-        const auto k = static_cast<std::size_t>(lastKept);
-        what += " (previous kept row: " + rowName(k) + ", " + timeText(t[k], t_.epoch) + ")";
-      }
-      problem(ReadProblemKind::kTimeNotIncreasing, rowAt(i), "time", what + "; row skipped",
-              "rows must be in time order; check the logger clock or sort the file");
-    }
-  }
-  std::ptrdiff_t prev = -1;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!keep[i]) continue;
-    if (prev < 0 || t[i] != t[static_cast<std::size_t>(prev)]) {
-      prev = static_cast<std::ptrdiff_t>(i);
-      continue;
-    }
-    const auto p = static_cast<std::size_t>(prev);
-    keep[i] = 0;
-    ++rep_.rows_merged;
-    bool conflict = false;
-    for (auto& c : t_.columns) {
-      if (c.values.empty()) continue;
-      double& dst = c.values[p];
-      const double src = c.values[i];
-      if (std::isnan(dst)) {
-        dst = src;
-      } else if (!std::isnan(src) && src != dst && !conflict) {
-        conflict = true;
-        problem(ReadProblemKind::kConflictingDuplicate, rowAt(i), c.name,
-                rowPrefix(i) + "value " + numberText(src) + " differs from " + numberText(dst) + " at " + rowName(p) +
-                    " with the same time; the first value is kept",
-                "remove the repeated row or correct its time");
-      }
-    }
-    problem(ReadProblemKind::kDuplicateTime, rowAt(i), "time",
-            rowPrefix(i) + "time " + timeText(t[i], t_.epoch) + " repeats " + rowName(p) +
-                "; merged into that row (its empty cells filled from this one)",
-            "time must be strictly increasing; remove repeated rows");
-  }
-  keepRows(keep);
-}
-
-void TableTidier::noteGaps() {
-  const std::vector<double>& t = t_.time;
-  if (t.size() <= 2) return;
-  std::vector<double> dt(t.size() - 1);
-  for (std::size_t i = 1; i < t.size(); ++i) dt[i - 1] = t[i] - t[i - 1];
-  auto mid = dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2);
-  std::nth_element(dt.begin(), mid, dt.end());
-  const double limit = std::max(3600.0, 1000.0 * *mid);
-  for (std::size_t i = 1; i < t.size(); ++i)
-    if (t[i] - t[i - 1] > limit)
-      problem(ReadProblemKind::kTimeGap, rowAt(i), "time",
-              rowPrefix(i) + numberText(t[i] - t[i - 1]) + " s without any row since " + rowName(i - 1) +
-                  " (typical step " + numberText(*mid) + " s); nothing changed",
-              "check this time stamp if the logger did not really stop");
+  if (any) detail::keepRows(t_, keep);
 }
 
 void TableTidier::run() {
   if (t_.row_where.size() < t_.time.size()) t_.row_where.resize(t_.time.size(), 0);
   convertUnits();
   dropRowsWithoutTime();
-  repairTimeOrder();
-  noteGaps();
+  detail::repairTimeOrder(t_, opt_, rep_);
+  detail::noteTimeGaps(t_, opt_, rep_);
 }
 
 }  // namespace

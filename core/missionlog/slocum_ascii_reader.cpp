@@ -9,6 +9,9 @@
 
 #include "common/input_error.h"
 #include "missionlog/channel_aliases.h"
+#include "missionlog/detail/ascii_text.h"
+#include "missionlog/detail/line_cells.h"
+#include "missionlog/detail/report_problem.h"
 #include "missionlog/log_table.h"
 #include "missionlog/text_cells.h"
 #include "missionlog/text_lines.h"
@@ -22,29 +25,9 @@ constexpr std::size_t kMaxSensors = 20000;
 // Slocum writes this for a latitude/longitude without a fix.
 constexpr double kNoFix = 69696969.0;
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
-struct Token {
-  std::string_view text;
-  std::size_t offset = 0;
-};
-
-void splitBlanks(std::string_view line, std::vector<Token>& out) {
-  out.clear();
-  std::size_t i = 0;
-  const std::size_t n = line.size();
-  while (i < n) {
-    while (i < n && (line[i] == ' ' || line[i] == '\t')) ++i;
-    if (i >= n) break;
-    const std::size_t s = i;
-    while (i < n && line[i] != ' ' && line[i] != '\t') ++i;
-    out.push_back({line.substr(s, i - s), s});
-  }
-}
+using detail::splitBlanks;
+using detail::trim;
+using Token = detail::Cell;
 
 // `key: value` with a key of letters, digits and '_'.
 bool tagLine(std::string_view line, std::string& key, std::string& value) {
@@ -77,13 +60,7 @@ class SlocumParser {
  private:
   enum class State { kTags, kLabels, kData };
   void problem(ReadProblemKind kind, long column, std::string channel, std::string what, std::string fix) {
-    ReadProblem p;
-    p.kind = kind;
-    p.where = {file_, line_, column};
-    p.column = std::move(channel);
-    p.problem = std::move(what);
-    p.fix = std::move(fix);
-    rep_.add(std::move(p), opt_.max_problems_per_kind);
+    detail::reportProblem(rep_, opt_, kind, {file_, line_, column}, std::move(channel), std::move(what), std::move(fix));
   }
   void skip(ReadProblemKind kind, long column, std::string channel, std::string what, std::string fix) {
     ++rep_.rows_skipped;

@@ -6,21 +6,12 @@
 
 #include "missionlog/decimal_overflow.h"
 #include "missionlog/decimal_parse.h"
+#include "missionlog/detail/ascii_text.h"
 
 namespace auv {
 namespace {
 
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    char x = a[i], y = b[i];
-    if (x >= 'A' && x <= 'Z') x = static_cast<char>(x - 'A' + 'a');
-    if (y >= 'A' && y <= 'Z') y = static_cast<char>(y - 'A' + 'a');
-    if (x != y) return false;
-  }
-  return true;
-}
-
+using detail::iequals;
 
 }  // namespace
 

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <string>
 
+#include "missionlog/detail/ascii_text.h"
+
 namespace auv {
 namespace {
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+using detail::isDigit;
 
 // 1..maxDigits digits at s[i]; advances i.
 bool number(std::string_view s, std::size_t& i, int minDigits, int maxDigits, long long& out) {
@@ -48,11 +50,7 @@ bool clock(std::string_view s, std::size_t& i, double& seconds) {
   return true;
 }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
+using detail::trim;
 
 bool dayMonthYear(std::string_view s, std::size_t& i, long long& days) {
   long long d = 0, m = 0, y = 0;

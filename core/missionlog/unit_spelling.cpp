@@ -3,23 +3,14 @@
 #include <utility>
 #include <vector>
 
+#include "missionlog/detail/ascii_text.h"
 #include "missionlog/unit_conversion.h"
 
 namespace auv {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  return out;
-}
+using detail::lower;
+using detail::trim;
 
 // Lower-case spellings seen in Slocum (dbd2asc), CF/NetCDF and vendor text
 // headers -> a spelling unit_conversion knows (or the house spelling of a unit
