@@ -1,8 +1,10 @@
 #include "discrepancy/profile_update.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "discrepancy/term_replay.h"
+#include "vehicle/profile_loader.h"
 
 namespace auv::discrepancy {
 
@@ -75,6 +77,31 @@ nlohmann::json profileWithAcceptedTerms(const nlohmann::json& doc, const Vehicle
   }
   if (mc["terms"].empty()) mc.erase("terms");
   return out;
+}
+
+VehicleProfile vehicleFromStoredProfile(const nlohmann::json& profile_doc, const VehicleProfile& base,
+                                        const std::string& source_name) {
+  VehicleProfile v = parseVehicleProfile(profile_doc.dump(), source_name);
+  for (const auto& [key, value] : base.sections.items())
+    if (!v.sections.contains(key)) v.sections[key] = value;
+  return v;
+}
+
+VehicleProfile vehicleWithAcceptedTerms(const nlohmann::json& doc, const VehicleProfile& v, const ModelCheckResult& result,
+                                        const std::vector<std::string>& accepted_ids, const std::string& log_name,
+                                        nlohmann::json* profile_doc_out) {
+  // Companion sections first, so that terms written into them (e.g. the
+  // pitch damping in "hydrodynamics") land on the full section.
+  nlohmann::json full = doc;
+  for (const auto& [key, value] : v.sections.items())
+    if (!full.contains(key)) full[key] = value;
+  ModelCheckResult chosen = result;
+  chosen.missing_physics.clear();
+  for (const MissingPhysics& m : result.missing_physics)
+    if (std::find(accepted_ids.begin(), accepted_ids.end(), m.id) != accepted_ids.end()) chosen.missing_physics.push_back(m);
+  const nlohmann::json out = profileWithAcceptedTerms(full, v, chosen, log_name);
+  if (profile_doc_out) *profile_doc_out = out;
+  return vehicleFromStoredProfile(out, v, v.file);
 }
 
 }  // namespace auv::discrepancy

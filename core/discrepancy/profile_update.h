@@ -10,6 +10,7 @@
 // "model_check.accepted" with its value, sigma, unit, where it was written and
 // the log it came from.
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,5 +22,21 @@ namespace auv::discrepancy {
 // `profile_doc` is the profile file's JSON as read (JsonReader::parseFile(v.file)).
 nlohmann::json profileWithAcceptedTerms(const nlohmann::json& profile_doc, const VehicleProfile& v,
                                         const ModelCheckResult& result, const std::string& log_name);
+
+// The configuration's vehicle after a model check, with only the terms the
+// technician accepted (`accepted_ids`, MissingPhysics ids; the others are
+// dropped from `result`). `doc` is the profile's JSON; sections the loaded
+// profile has from companion files (resources/sim/<id>_hydrodynamics.json)
+// are carried over, so the returned profile is complete. Also returns the
+// profile JSON as written (for the history), via `profile_doc_out`.
+VehicleProfile vehicleWithAcceptedTerms(const nlohmann::json& doc, const VehicleProfile& v, const ModelCheckResult& result,
+                                        const std::vector<std::string>& accepted_ids, const std::string& log_name,
+                                        nlohmann::json* profile_doc_out = nullptr);
+
+// A vehicle profile from a stored profile JSON (the history's model), with
+// the companion sections of `base` it lacks. Throws InputError naming the
+// field when the stored JSON is not a valid profile.
+VehicleProfile vehicleFromStoredProfile(const nlohmann::json& profile_doc, const VehicleProfile& base,
+                                        const std::string& source_name);
 
 }  // namespace auv::discrepancy

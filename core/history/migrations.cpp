@@ -95,12 +95,26 @@ CREATE INDEX recommendations_by_time ON recommendations(configuration_id, at);
 CREATE INDEX installed_by_time ON installed_states(configuration_id, installed_at);
 )sql";
 
+// v3: the vehicle model each configuration has accepted from model checks.
+const char* kSchemaV3 = R"sql(
+CREATE TABLE model_terms (
+  id INTEGER PRIMARY KEY,
+  configuration_id INTEGER NOT NULL REFERENCES configurations(id),
+  at TEXT NOT NULL,
+  analysis_id INTEGER,
+  model_json TEXT NOT NULL CHECK (json_valid(model_json)),
+  FOREIGN KEY (analysis_id, configuration_id) REFERENCES analysis_results(id, configuration_id)
+);
+CREATE INDEX model_terms_by_time ON model_terms(configuration_id, at);
+)sql";
+
 std::vector<Migration> makeStandard() {
   return {
       {1, "vehicles, configurations, weighings, water, missions",
        [](Database& db) { db.exec(kSchemaV1, "creating schema v1"); }},
       {2, "analyses, recommendations, installed states",
        [](Database& db) { db.exec(kSchemaV2, "creating schema v2"); }},
+      {3, "accepted vehicle-model terms", [](Database& db) { db.exec(kSchemaV3, "creating schema v3"); }},
   };
 }
 }  // namespace

@@ -69,6 +69,17 @@ struct AnalysisResult {
   nlohmann::json result = nlohmann::json::object();
 };
 
+// The configuration's vehicle model after a model check: the terms the
+// technician accepted and the vehicle profile with them written in
+// (discrepancy/profile_update.h), which the simulator, the analysis and the
+// planner use from then on. `model` = {"log", "accepted": [...], "profile": {...}}.
+struct ModelTerms {
+  RecordId id = 0;
+  TimePoint at{};
+  std::optional<RecordId> analysis_id;
+  nlohmann::json model = nlohmann::json::object();
+};
+
 struct Recommendation {
   RecordId id = 0;
   TimePoint at{};

@@ -50,6 +50,8 @@ class HistoryStore {
   RecordId addRecommendation(const std::string& config_id, const Recommendation& r);
   void setRecommendationAccepted(RecordId recommendation_id, bool accepted);
   RecordId addInstalledState(const std::string& config_id, const InstalledState& s);
+  // `m.model` must hold a "profile" object (the vehicle profile with the terms).
+  RecordId addModelTerms(const std::string& config_id, const ModelTerms& m);
 
   // Post-mission save: the mission, its analysis (linked to it) and the water
   // it measured, all or nothing.
@@ -73,6 +75,7 @@ class HistoryStore {
                                             bool with_temperature = false);
   std::optional<AnalysisResult> latestAnalysis(const std::string& config_id, TimePoint t);
   std::optional<InstalledState> latestInstalled(const std::string& config_id, TimePoint t);
+  std::optional<ModelTerms> latestModelTerms(const std::string& config_id, TimePoint t);
   std::optional<Mission> missionBySha256(const std::string& config_id, const std::string& sha);
 
  private:

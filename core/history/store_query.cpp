@@ -83,6 +83,16 @@ AnalysisResult readAnalysis(Statement& st) {
   return a;
 }
 
+const char* kModelTermsCols = "id, at, analysis_id, model_json FROM model_terms";
+ModelTerms readModelTerms(Statement& st) {
+  ModelTerms m;
+  m.id = st.integer(0);
+  m.at = parseIsoUtc(st.text(1), "model_terms.at");
+  m.analysis_id = st.optInteger(2);
+  m.model = parseStored(st.text(3), "model terms");
+  return m;
+}
+
 const char* kRecommendationCols =
     "id, at, analysis_id, policy, recommendation_json, accepted FROM recommendations";
 Recommendation readRecommendation(Statement& st) {
@@ -147,6 +157,10 @@ std::optional<WaterCondition> HistoryStore::latestWater(const std::string& confi
 std::optional<AnalysisResult> HistoryStore::latestAnalysis(const std::string& config_id,
                                                            TimePoint t) {
   return latest(*db_, kAnalysisCols, "at", "", configRow(config_id), t, readAnalysis);
+}
+
+std::optional<ModelTerms> HistoryStore::latestModelTerms(const std::string& config_id, TimePoint t) {
+  return latest(*db_, kModelTermsCols, "at", "", configRow(config_id), t, readModelTerms);
 }
 
 std::optional<InstalledState> HistoryStore::latestInstalled(const std::string& config_id,

@@ -153,6 +153,17 @@ RecordId HistoryStore::addAnalysisResult(const std::string& config_id, const Ana
   return id;
 }
 
+RecordId HistoryStore::addModelTerms(const std::string& config_id, const ModelTerms& m) {
+  if (!m.model.is_object() || !m.model.contains("profile") || !m.model["profile"].is_object())
+    throw InputError("model_terms.model.profile", "missing", "store the vehicle profile with the accepted terms written in");
+  Transaction tx(*db_);
+  auto st = db_->prepare("INSERT INTO model_terms(configuration_id, at, analysis_id, model_json) VALUES (?1, ?2, ?3, ?4)");
+  st.bind(1, configRow(config_id)).bind(2, toIsoUtc(m.at)).bind(3, m.analysis_id).bind(4, m.model.dump()).run();
+  const RecordId id = db_->lastInsertId();
+  tx.commit();
+  return id;
+}
+
 RecordId HistoryStore::addRecommendation(const std::string& config_id, const Recommendation& r) {
   if (r.policy.empty())
     throw InputError("recommendation.policy", "empty policy", "name the policy, e.g. exact");

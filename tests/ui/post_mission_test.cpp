@@ -45,6 +45,7 @@
 #include "widgets/linked_chart_view.h"
 #include "wizard/column_mapping_store.h"
 #include "wizard/demo_state.h"
+#include "wizard/history_save.h"
 #include "wizard/operator_wizard.h"
 #include "wizard/session_json.h"
 
@@ -348,6 +349,34 @@ TEST_F(PostMission, GliderAnalysisAndModelCheckFindHullCompressibility) {
     EXPECT_EQ(missions, 1);
   } else {
     EXPECT_EQ(m->nextId(), OperatorWizard::kPreMission);
+    // Next: the accepted term becomes the configuration's vehicle model...
+    const VehicleProfile base = *wiz->state().vehicle;  // a copy: the state's is replaced
+    wiz->next();
+    ASSERT_EQ(wiz->currentId(), OperatorWizard::kPreMission);
+    const nlohmann::json& vm = wiz->state().model_profile;
+    ASSERT_TRUE(vm.is_object());
+    ASSERT_EQ(vm["model_check"]["accepted"].size(), 1u);
+    EXPECT_EQ(vm["model_check"]["accepted"][0]["id"], "hull_compressibility");
+    const double si = mc.accepted[*discrepancy::findTerm("hull_compressibility")];
+    const VehicleProfile& now = *wiz->state().vehicle;
+    auto compressibility = [](const VehicleProfile& vp, bool in_flight_model) {
+      return in_flight_model ? vp.sections["flight_model"].value("compressibility_per_dbar", 0.0)
+                             : vp.hull.compressibility_per_dbar;
+    };
+    const bool fm = vm["model_check"]["accepted"][0]["written_to"] == "flight_model.compressibility_per_dbar";
+    const double written = compressibility(now, fm) - compressibility(base, fm);
+    EXPECT_NEAR(written, si, 1e-12 + 1e-9 * si);
+    // ...back and Next again does not add it twice...
+    wiz->back();
+    wiz->next();
+    EXPECT_EQ(wiz->state().model_profile["model_check"]["accepted"].size(), 1u);
+    // ...and it is saved with the mission, whole, for the next session.
+    HistoryStore store(path("history.sqlite").toStdString());
+    saveMissionToHistory(store, wiz->state(), fixedNow());
+    const auto saved = store.latestModelTerms("49-1-1", fixedNow());
+    ASSERT_TRUE(saved);
+    EXPECT_EQ(saved->model["profile"], vm);
+    EXPECT_EQ(saved->model["accepted"][0]["id"], "hull_compressibility");
   }
 }
 

@@ -17,13 +17,17 @@
 #include <QtCharts/QValueAxis>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "common/input_error.h"
+#include "discrepancy/profile_update.h"
 #include "history/store.h"
 #include "plot/min_max_decimation.h"
 #include "plot/nice_axis.h"
 #include "widgets/inputs.h"
 #include "wizard/history_save.h"
+#include "vehicle/json_reader.h"
+#include "vehicle/vehicle_catalog.h"
 #include "wizard/operator_wizard.h"
 
 namespace auv::ui {
@@ -189,7 +193,15 @@ void ModelCheckPage::initializePage() {
     setup.auv.installed_kg = state_.mission_installed_kg;
   status_->setText(tr("Checking the model against the recording…"));
   busy_->setVisible(true);
-  job_.start(state_.log, *state_.vehicle, state_.resource_dir, setup);
+  // Against the configuration's model as it was before this session's
+  // terms (a new log after going back must not see them twice).
+  VehicleProfile base = *state_.vehicle;
+  try {
+    base = configurationVehicle();
+  } catch (const InputError&) {
+    // The session's vehicle, e.g. a profile file that is not in the catalog.
+  }
+  job_.start(state_.log, base, state_.resource_dir, setup);
   emit completeChanged();
 }
 
@@ -411,6 +423,38 @@ void ModelCheckPage::updateAccepted() {
   decided_for_ = outcome_.log;
 }
 
+VehicleProfile ModelCheckPage::configurationVehicle() const {
+  const VehicleProfile catalog = VehicleCatalog(state_.vehicles_dir).load(state_.vehicle->id);
+  if (state_.history_model.is_null()) return catalog;
+  return discrepancy::vehicleFromStoredProfile(state_.history_model, catalog, "history: " + state_.configuration_id);
+}
+
+bool ModelCheckPage::adoptAcceptedTerms() {
+  // The accepted terms become the configuration's vehicle model for the rest
+  // of the session (the plan's buoyancy at other depths and temperatures) and
+  // are saved with the mission. Always from the model the configuration had,
+  // so going back and forth never applies a term twice.
+  if (!state_.vehicle || !state_.model_check) return true;
+  try {
+    const bool from_history = !state_.history_model.is_null();
+    const VehicleProfile base = configurationVehicle();
+    const VehicleProfile catalog = VehicleCatalog(state_.vehicles_dir).load(state_.vehicle->id);
+    if (state_.accepted_terms.empty()) {
+      state_.vehicle = base;
+      state_.model_profile = state_.history_model;
+      return true;
+    }
+    const nlohmann::json doc = from_history ? state_.history_model : JsonReader::parseFile(catalog.file);
+    const std::string log = std::filesystem::path(state_.log_file).filename().string();
+    state_.vehicle = discrepancy::vehicleWithAcceptedTerms(doc, base, *state_.model_check, state_.accepted_terms, log,
+                                                           &state_.model_profile);
+    return true;
+  } catch (const InputError& e) {
+    save_status_->setText(tr("The accepted terms could not be added to the vehicle model: %1").arg(q(e.what())));
+    return false;
+  }
+}
+
 void ModelCheckPage::setTermAccepted(const std::string& id, bool accepted) {
   for (int r = 0; r < terms_->rowCount(); ++r) {
     QTableWidgetItem* item = terms_->item(r, 0);
@@ -422,6 +466,7 @@ void ModelCheckPage::setTermAccepted(const std::string& id, bool accepted) {
 bool ModelCheckPage::validatePage() {
   // A session resumed past this page may press Next before the check ends.
   if (job_.running()) job_.waitForFinished();
+  if (!adoptAcceptedTerms()) return false;
   if (nextId() != -1) return true;
   // Last page of the post-mission sequence: Finish saves the mission.
   auto* wiz = qobject_cast<OperatorWizard*>(wizard());

@@ -38,6 +38,10 @@ class ModelCheckPage : public QWizardPage {
   void initializePage() override;
   bool isComplete() const override;
   bool validatePage() override;
+  // state.vehicle = the configuration's model + the accepted terms.
+  bool adoptAcceptedTerms();
+  // The catalog's profile with the history's model for this configuration.
+  VehicleProfile configurationVehicle() const;
   int nextId() const override;
 
   ModelCheckJob& job() { return job_; }

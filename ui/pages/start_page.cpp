@@ -14,6 +14,7 @@
 #include <QVBoxLayout>
 
 #include "common/input_error.h"
+#include "discrepancy/profile_update.h"
 #include "history/store.h"
 #include "vehicle/vehicle_catalog.h"
 #include "weighing/slocum_layout.h"
@@ -327,6 +328,19 @@ void StartPage::applyConfiguration(const Configuration& c) {
   state_.water_type = c.water_type;
   state_.configuration_in_history = true;
   state_.vehicle = VehicleCatalog(state_.vehicles_dir).load(c.vehicle_key);
+  // The configuration's vehicle model (terms accepted in earlier model checks).
+  state_.history_model = nullptr;
+  if (HistoryStore* hs = wiz()->history()) {
+    if (const auto m = hs->latestModelTerms(c.config_id, makeUtc(9999, 12, 31, 23, 59, 59)); m && m->model.contains("profile")) {
+      try {
+        state_.vehicle = discrepancy::vehicleFromStoredProfile(m->model["profile"], *state_.vehicle, "history: " + c.config_id);
+        state_.history_model = m->model["profile"];
+      } catch (const InputError&) {
+        // A stored model this version cannot read: the catalog's profile.
+      }
+    }
+  }
+  state_.model_profile = state_.history_model;
   if (!switching) return;
   // Installed pieces belong to a configuration: forget the previous one's.
   state_.crane.installed_kg.clear();

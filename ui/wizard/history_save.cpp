@@ -95,6 +95,16 @@ RecordId saveMissionToHistory(HistoryStore& store, const WizardState& s, TimePoi
   Transaction tx(store.database());
   ensureConfiguration(store, s, now);
   const RecordId id = store.importMissionFile(s.configuration_id, s.log_file, missionSummaryJson(s), now);
+  // Terms accepted in this session's model check become the configuration's model.
+  if (s.model_profile.is_object() && s.model_profile != s.history_model) {
+    ModelTerms m;
+    m.at = now;
+    nlohmann::json accepted = nlohmann::json::array();
+    if (s.model_profile.contains("model_check") && s.model_profile["model_check"].contains("accepted"))
+      accepted = s.model_profile["model_check"]["accepted"];
+    m.model = {{"log", s.log_file}, {"accepted", accepted}, {"profile", s.model_profile}};
+    store.addModelTerms(s.configuration_id, m);
+  }
   tx.commit();
   return id;
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/input_error.h"
+#include "discrepancy/profile_update.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/vehicle_catalog.h"
 #include "weighing/slocum_layout.h"
@@ -121,6 +122,8 @@ nlohmann::json sessionToJson(const WizardState& s, int page_id, const std::strin
   // model-check terms accepted (analysis and check are recomputed from the log).
   j["mission_installed_kg"] = s.mission_installed_kg;
   j["accepted_terms"] = s.accepted_terms;
+  if (!s.history_model.is_null()) j["history_model"] = s.history_model;
+  if (!s.model_profile.is_null()) j["model_profile"] = s.model_profile;
   return j;
 }
 
@@ -195,6 +198,11 @@ SavedSession sessionFromJson(const std::string& json_text, const std::string& fi
     }
   }
   if (root.has("mission_installed_kg")) s.mission_installed_kg = root.numbers("mission_installed_kg");
+  if (root.has("history_model")) s.history_model = root.node().at("history_model");
+  if (root.has("model_profile")) s.model_profile = root.node().at("model_profile");
+  if (s.vehicle && s.model_profile.is_object()) {
+    s.vehicle = discrepancy::vehicleFromStoredProfile(s.model_profile, *s.vehicle, "session: model_profile");
+  }
   if (root.has("accepted_terms")) {
     const nlohmann::json& terms = root.node().at("accepted_terms");
     if (!terms.is_array()) root.fail("accepted_terms", "must be a list of term names", "discard the session");

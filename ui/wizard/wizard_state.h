@@ -55,6 +55,11 @@ struct WizardState {
   std::optional<analysis::AnalysisReport> analysis;
   std::optional<discrepancy::ModelCheckResult> model_check;
   std::vector<std::string> accepted_terms;
+  // The configuration's vehicle model: the profile JSON with the terms
+  // accepted so far (discrepancy/profile_update.h). `history_model` is what
+  // the history had when the configuration was picked; `model_profile` adds
+  // this session's accepted terms. Null = the catalog's profile.
+  nlohmann::json history_model, model_profile;
 
   // Pre mission: the next mission's water and policy, the plan, what the
   // technician ticked off and what was actually installed (saved to history).

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "analysis/analysis_report.h"
 #include "analysis/mission_analysis.h"
@@ -18,6 +19,7 @@
 #include "sim/water_from_log.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/profile_loader.h"
+#include "vehicle/vehicle_catalog.h"
 
 namespace auv::discrepancy {
 namespace {
@@ -160,6 +162,40 @@ TEST(ModelIt, AnAcceptedTermIsUsedFromThenOn) {
   // The analysis reads the hull compressibility from the copy too.
   const analysis::AnalysisReport ar = analysis::analyzeMission(log, v2);
   EXPECT_DOUBLE_EQ(ar.details["glider_fit"]["constants"]["compressibility_per_dbar"].get<double>(), v2.hull.compressibility_per_dbar);
+}
+
+TEST(ModelIt, OnlyTheTermsTheTechnicianAcceptsReachTheVehicle) {
+  // Two terms found; the technician keeps one. The returned vehicle has
+  // that one, the rejected one is nowhere, and the companion sections
+  // (HUGIN's hydrodynamics live in resources/sim) are still there.
+  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("hugin1000");
+  ASSERT_TRUE(v.sections.contains("hydrodynamics"));
+  ModelCheckResult r;
+  for (const auto& [id, si] : {std::pair<const char*, double>{"hull_compressibility", 3e-6}, {"vertical_current", 0.004}}) {
+    const std::size_t k = *findTerm(id);
+    r.accepted[k] = si;
+    MissingPhysics m;
+    m.id = id;
+    m.unit = std::string(termLibrary()[k].unit);
+    m.value = si * termLibrary()[k].display_scale;
+    r.missing_physics.push_back(m);
+  }
+  nlohmann::json stored;
+  const VehicleProfile kept = vehicleWithAcceptedTerms(JsonReader::parseFile(v.file), v, r, {"hull_compressibility"},
+                                                       "survey.csv", &stored);
+  EXPECT_DOUBLE_EQ(kept.hull.compressibility_per_dbar, v.hull.compressibility_per_dbar + 3e-6);
+  EXPECT_EQ(stored["model_check"]["accepted"].size(), 1u);
+  EXPECT_FALSE(stored["model_check"].contains("terms"));  // vertical_current rejected
+  EXPECT_TRUE(kept.sections.contains("hydrodynamics"));
+  // What the history stores loads back to the same vehicle.
+  const VehicleProfile again = vehicleFromStoredProfile(stored, VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("hugin1000"), "history");
+  EXPECT_DOUBLE_EQ(again.hull.compressibility_per_dbar, kept.hull.compressibility_per_dbar);
+  EXPECT_DOUBLE_EQ(again.hull.volumeAt(8.0, 300.0), kept.hull.volumeAt(8.0, 300.0));
+  EXPECT_LT(again.hull.volumeAt(8.0, 300.0), v.hull.volumeAt(8.0, 300.0));  // compresses more at depth
+  EXPECT_TRUE(again.sections.contains("hydrodynamics"));
+  // Nothing accepted: the vehicle as it was.
+  const VehicleProfile none = vehicleWithAcceptedTerms(JsonReader::parseFile(v.file), v, r, {}, "survey.csv");
+  EXPECT_DOUBLE_EQ(none.hull.compressibility_per_dbar, v.hull.compressibility_per_dbar);
 }
 
 TEST(ModelCheckJson, TheContractFieldsAreThere) {

@@ -51,7 +51,7 @@ TEST_F(HistoryOpenTest, NewerSchemaIsRefusedAndLeftAlone) {
   const std::string before = sha256OfFile(db_path);
   const std::string msg = openError(db_path);
   EXPECT_TRUE(contains(msg, db_path)) << msg;
-  EXPECT_TRUE(contains(msg, "newer auvballast (schema version 7; this program knows up to 2)")) << msg;
+  EXPECT_TRUE(contains(msg, "newer auvballast (schema version 7; this program knows up to 3)")) << msg;
   EXPECT_TRUE(contains(msg, "update auvballast")) << msg;
   EXPECT_EQ(sha256OfFile(db_path), before);
 }
@@ -89,7 +89,7 @@ TEST_F(HistoryOpenTest, OlderSchemaIsMigratedKeepingTheData) {
               0);
   }
   HistoryStore store(db_path);
-  EXPECT_EQ(store.schemaVersion(), 2);
+  EXPECT_EQ(store.schemaVersion(), 3);
   const auto s = store.lastState("1-2-3", makeUtc(2014, 4, 5));
   ASSERT_TRUE(s && s->last_temperature);
   EXPECT_DOUBLE_EQ(*s->last_temperature->temperature_degC, 6.545581);
@@ -103,16 +103,16 @@ TEST_F(HistoryOpenTest, FailedMigrationLeavesTheFileByteIdentical) {
     old.addConfiguration(hugin("1-2-3", makeUtc(2014, 4, 4, 15, 28)));
   }
   const std::string before = sha256OfFile(db_path);
-  // Steps 2 (real) and 3 (injected: writes, then fails) are pending.
+  // Steps 2 and 3 (real) and 4 (injected: writes, then fails) are pending.
   std::vector<Migration> steps = standardMigrations();
-  steps.push_back({3, "injected failure", [](Database& db) {
+  steps.push_back({4, "injected failure", [](Database& db) {
                      db.exec("CREATE TABLE half_done(x); INSERT INTO half_done VALUES (1);",
                              "test step");
                      throw std::runtime_error("injected failure after a partial write");
                    }});
   const std::string msg = openError(db_path, &steps);
   EXPECT_TRUE(contains(msg, db_path)) << msg;
-  EXPECT_TRUE(contains(msg, "from schema version 1 to 3: step 3 (injected failure) failed")) << msg;
+  EXPECT_TRUE(contains(msg, "from schema version 1 to 4: step 4 (injected failure) failed")) << msg;
   EXPECT_TRUE(contains(msg, "left exactly as it was")) << msg;
   EXPECT_EQ(sha256OfFile(db_path), before);
 
@@ -125,7 +125,7 @@ TEST_F(HistoryOpenTest, FailedMigrationLeavesTheFileByteIdentical) {
   EXPECT_EQ(sha256OfFile(db_path), before);
 
   HistoryStore store(db_path);  // the real program still opens and upgrades it
-  EXPECT_EQ(store.schemaVersion(), 2);
+  EXPECT_EQ(store.schemaVersion(), 3);
   EXPECT_EQ(store.database().queryInt(
                 "SELECT count(*) FROM sqlite_schema WHERE name IN ('half_done', 'ok_part')"),
             0);

@@ -16,7 +16,7 @@ class HistoryStoreTest : public test::StoreTest {};
 TEST_F(HistoryStoreTest, NewFileIsMigratedWithDurabilitySettings) {
   HistoryStore store(db_path);
   EXPECT_EQ(store.schemaVersion(), latestSchemaVersion());
-  EXPECT_EQ(store.schemaVersion(), 2);
+  EXPECT_EQ(store.schemaVersion(), 3);
   Database& db = store.database();
   EXPECT_EQ(db.queryText("PRAGMA journal_mode"), "wal");
   EXPECT_EQ(db.queryInt("PRAGMA foreign_keys"), 1);
@@ -62,6 +62,35 @@ TEST_F(HistoryStoreTest, RecordsRoundTripThroughTheFile) {
   EXPECT_EQ(s.points[2].name, "aft_starboard");
   EXPECT_EQ(s.points[2].pieces_kg.size(), 5u);
   EXPECT_DOUBLE_EQ(*s.total_mass_kg, 1565.2);
+}
+
+TEST_F(HistoryStoreTest, AcceptedModelTermsRoundTripAndTheLatestWins) {
+  const TimePoint t0 = makeUtc(2026, 5, 19, 17, 9);
+  {
+    HistoryStore store(db_path);
+    store.addConfiguration(hugin("01-02-03", t0));
+    ModelTerms m;
+    m.at = t0;
+    m.model = {{"log", "a.csv"},
+               {"accepted", {{{"id", "hull_compressibility"}, {"value", 4.7e-6}}}},
+               {"profile", {{"id", "hugin1000"}, {"hull", {{"compressibility_per_dbar", 4.7e-6}}}}}};
+    store.addModelTerms("01-02-03", m);
+    m.at = t0 + minutes{60};
+    m.model["profile"]["hull"]["compressibility_per_dbar"] = 5.1e-6;
+    store.addModelTerms("01-02-03", m);
+    ModelTerms bad;
+    bad.at = t0;
+    EXPECT_THROW(store.addModelTerms("01-02-03", bad), InputError);  // no profile: refused, nothing written
+  }
+  HistoryStore store(db_path);
+  EXPECT_EQ(store.database().queryInt("SELECT count(*) FROM model_terms"), 2);
+  const auto latest = store.latestModelTerms("01-02-03", makeUtc(2030, 1, 1));
+  ASSERT_TRUE(latest);
+  EXPECT_DOUBLE_EQ(latest->model["profile"]["hull"]["compressibility_per_dbar"].get<double>(), 5.1e-6);
+  const auto earlier = store.latestModelTerms("01-02-03", t0 + minutes{30});
+  ASSERT_TRUE(earlier);
+  EXPECT_DOUBLE_EQ(earlier->model["profile"]["hull"]["compressibility_per_dbar"].get<double>(), 4.7e-6);
+  EXPECT_FALSE(store.latestModelTerms("01-02-03", t0 - minutes{1}));
 }
 
 TEST_F(HistoryStoreTest, LastStateReportsPiecesErrorsAndTemperatureAge) {
