@@ -16,6 +16,8 @@
 #include "discrepancy/model_check_report.h"
 #include "discrepancy/profile_update.h"
 #include "discrepancy/vehicle_check.h"
+#include "history/store.h"
+#include "history/timestamp.h"
 #include "missionlog/log_reader.h"
 #include "number_list.h"
 #include "resource_paths.h"
@@ -26,7 +28,7 @@ namespace auv::cli {
 namespace {
 
 struct ModelCheckOpts {
-  std::string vehicle, log, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth;
+  std::string vehicle, log, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth, config, history;
   bool accept = false;
 };
 
@@ -83,8 +85,22 @@ int runModelCheck(const ModelCheckOpts& o) {
       j["model_check"]["profile_written"] = nullptr;
     } else {
       const nlohmann::json doc = JsonReader::parseFile(v.file);
-      writeJson(discrepancy::profileWithAcceptedTerms(doc, v, mc, logName), out);
+      const nlohmann::json written = discrepancy::profileWithAcceptedTerms(doc, v, mc, logName);
+      writeJson(written, out);
       j["model_check"]["profile_written"] = out;
+      if (!o.config.empty()) {
+        // Also the configuration's model in the history, from which 'plan'
+        // and the wizard take the vehicle from now on.
+        HistoryStore store(historyPath(o.history));
+        if (!store.configuration(o.config))
+          throw InputError("config", "'" + o.config + "' is not in the history '" + store.path() + "'",
+                           "record the configuration first (first-mission or the wizard)");
+        ModelTerms m;
+        m.at = nowUtc();
+        m.model = {{"log", logName}, {"accepted", written["model_check"]["accepted"]}, {"profile", written}};
+        store.addModelTerms(o.config, m);
+        j["model_check"]["history_config"] = o.config;
+      }
     }
   }
   if (!o.json.empty()) writeJson(j, o.json);
@@ -114,6 +130,9 @@ Command addModelCheckCommand(CLI::App& app) {
   cmd->add_option("--log", o->log, "Mission log (interchange CSV, docs/formats/mission-log-csv.md)")->required();
   cmd->add_option("--json", o->json, "Write the JSON report (analysis + missing_physics) here ('-' = stdout instead of text)");
   cmd->add_flag("--accept", o->accept, "Write the accepted terms into a copy of the vehicle profile");
+  cmd->add_option("--config", o->config,
+                  "With --accept: also save the accepted terms as this configuration's vehicle model in the history");
+  cmd->add_option("--history", o->history, "History database (default: the user's, as for 'plan')");
   cmd->add_option("--out-profile", o->out_profile, "Where --accept writes the profile copy (default <id>.model-check.json)");
   cmd->add_option("--installed", o->installed,
                   "AUV: adjustment mass at each point during the logged mission, kg, profile order");

@@ -12,6 +12,7 @@
 #include "cli_context.h"
 #include "commands.h"
 #include "common/input_error.h"
+#include "discrepancy/profile_update.h"
 #include "history/ballasting_file.h"
 #include "history/configuration_id.h"
 #include "history/staleness.h"
@@ -86,7 +87,7 @@ int runPlan(const PlanOpts& o) {
   if (o.vehicle.empty()) throw InputError("vehicle", "missing", "give --vehicle ID (see 'auvballast vehicles')");
   if (o.config.empty()) throw InputError("config", "missing", "give --config ID (thesis xx-xx-xx, e.g. 1-2-3)");
   requireValidConfigurationId(o.config);
-  const VehicleProfile v = VehicleCatalog(vehiclesDir()).load(o.vehicle);
+  VehicleProfile v = VehicleCatalog(vehiclesDir()).load(o.vehicle);
   PreMissionInput in;
   in.policy = planPolicyFromString(o.policy);
   in.use_optional_pieces = o.optional_pieces;
@@ -95,6 +96,7 @@ int runPlan(const PlanOpts& o) {
   // The history is needed for whatever the flags do not give, and to record the plan.
   std::unique_ptr<HistoryStore> store;
   std::optional<Configuration> config;
+  std::size_t model_terms = 0;
   const bool need_history = o.installed.empty() || o.report.empty();
   if (need_history || !o.no_save || o.accept) {
     store = std::make_unique<HistoryStore>(historyPath(o.history));
@@ -102,6 +104,14 @@ int runPlan(const PlanOpts& o) {
     if (config && config->vehicle_key != v.id) {
       throw InputError("vehicle", "configuration " + o.config + " is a " + config->vehicle_name + " in the history",
                        "use --vehicle " + config->vehicle_key + " or another configuration ID");
+    }
+    // The configuration's vehicle model (terms accepted in model checks):
+    // its hull compressibility and expansion set the buoyancy at other depths.
+    if (config) {
+      if (const auto m = store->latestModelTerms(o.config, nowUtc()); m && m->model.contains("profile")) {
+        v = discrepancy::vehicleFromStoredProfile(m->model["profile"], v, "history model of " + o.config);
+        model_terms = m->model.value("accepted", nlohmann::json::array()).size();
+      }
     }
     if (!config && need_history) {
       throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "'",
@@ -160,6 +170,8 @@ int runPlan(const PlanOpts& o) {
   j["sources"] = {{"analysis", s.report_name}, {"installed", o.installed.empty() ? "history" : "flags"},
                   {"water", source}};
   if (o.no_surface_check) j["warnings"].push_back("surface check disabled (--no-surface-check)");
+  if (model_terms > 0)
+    j["notes"].push_back("vehicle model from the history: " + std::to_string(model_terms) + " accepted model-check term(s)");
 
   if (store && config && !o.no_save) {
     Transaction tx(store->database());

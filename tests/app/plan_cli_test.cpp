@@ -191,4 +191,16 @@ TEST(PlanCli, InstalledAndAnalysisComeFromTheHistoryAndTheEnvironmentNamesIt) {
     EXPECT_GE(installed[i] + j["recommendation"]["points"][i]["add_kg"].get<double>(), -1e-9) << i;
   }
 }
+TEST(PlanCli, ModelCheckAcceptIntoAnUnknownConfigurationIsRefused) {
+  // --config saves the accepted terms as that configuration's model; a
+  // configuration the history does not have is named, and nothing is saved.
+  const std::string h = tempPath("model.sqlite"), profile = tempPath("slocum.model-check.json");
+  const auto r = runCli("model-check --vehicle slocum_g2 --log " + std::string(AUV_RESOURCE_DIR) +
+                        "/examples/slocum_g2_model-check_compressibility.csv --accept --config 4-4-4 --history " + h +
+                        " --out-profile " + profile);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("config"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("4-4-4"), std::string::npos) << r.err;
+}
+
 }  // namespace auv
