@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "analysis/analysis_report.h"
 #include "common/input_error.h"
 #include "firstmission/hugin_first_mission.h"
 #include "history/transaction.h"
@@ -95,6 +96,14 @@ RecordId saveMissionToHistory(HistoryStore& store, const WizardState& s, TimePoi
   Transaction tx(store.database());
   ensureConfiguration(store, s, now);
   const RecordId id = store.importMissionFile(s.configuration_id, s.log_file, missionSummaryJson(s), now);
+  // The analysis with its mission: the next session plans from it (pre mission).
+  if (s.analysis) {
+    AnalysisResult a;
+    a.at = now;
+    a.mission_id = id;
+    a.result = analysis::toJson(*s.analysis);
+    store.addAnalysisResult(s.configuration_id, a);
+  }
   // Terms accepted in this session's model check become the configuration's model.
   if (s.model_profile.is_object() && s.model_profile != s.history_model) {
     ModelTerms m;
