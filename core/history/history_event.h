@@ -1,7 +1,8 @@
 #pragma once
 // One entry of a configuration's history, any kind, for time-ordered views
 // and exports. Ties at the same second are ordered by kind in the order a
-// ballasting cycle happens (weigh, water, mission, analysis, advice, install).
+// ballasting cycle happens (weigh, water, mission, analysis, model, advice,
+// install).
 #include <nlohmann/json.hpp>
 #include <variant>
 
@@ -9,13 +10,13 @@
 
 namespace auv {
 
-enum class EventKind { kWeighing, kWater, kMission, kAnalysis, kRecommendation, kInstalled };
+enum class EventKind { kWeighing, kWater, kMission, kAnalysis, kModelTerms, kRecommendation, kInstalled };
 const char* toString(EventKind k);  // "weighing", "water", "mission", ...
 
 struct HistoryEvent {
   TimePoint at{};
   EventKind kind = EventKind::kWeighing;
-  std::variant<Weighing, WaterCondition, Mission, AnalysisResult, Recommendation, InstalledState>
+  std::variant<Weighing, WaterCondition, Mission, AnalysisResult, ModelTerms, Recommendation, InstalledState>
       record;
   RecordId id() const;
 };
@@ -41,6 +42,7 @@ nlohmann::json toJson(const Weighing& r);
 nlohmann::json toJson(const WaterCondition& r);
 nlohmann::json toJson(const Mission& r);
 nlohmann::json toJson(const AnalysisResult& r);
+nlohmann::json toJson(const ModelTerms& r);
 nlohmann::json toJson(const Recommendation& r);
 nlohmann::json toJson(const InstalledState& r);
 nlohmann::json toJson(const HistoryEvent& e);  // {"at","kind","id","record"}

@@ -20,6 +20,7 @@ const char* toString(EventKind k) {
     case EventKind::kWater: return "water";
     case EventKind::kMission: return "mission";
     case EventKind::kAnalysis: return "analysis";
+    case EventKind::kModelTerms: return "model_terms";
     case EventKind::kRecommendation: return "recommendation";
     case EventKind::kInstalled: return "installed";
   }
@@ -60,6 +61,10 @@ nlohmann::json toJson(const Mission& r) {
 nlohmann::json toJson(const AnalysisResult& r) {
   return {{"id", r.id}, {"at", toIsoUtc(r.at)}, {"mission_id", opt(r.mission_id)},
           {"result", r.result}};
+}
+
+nlohmann::json toJson(const ModelTerms& r) {
+  return {{"id", r.id}, {"at", toIsoUtc(r.at)}, {"analysis_id", opt(r.analysis_id)}, {"model", r.model}};
 }
 
 nlohmann::json toJson(const Recommendation& r) {

@@ -221,6 +221,7 @@ std::vector<HistoryEvent> HistoryStore::history(const std::string& config_id) {
           [](const Mission& r) { return r.imported_at; });
   collect(kAnalysisCols, EventKind::kAnalysis, readAnalysis,
           [](const AnalysisResult& r) { return r.at; });
+  collect(kModelTermsCols, EventKind::kModelTerms, readModelTerms, [](const ModelTerms& r) { return r.at; });
   collect(kRecommendationCols, EventKind::kRecommendation, readRecommendation,
           [](const Recommendation& r) { return r.at; });
   collect(kInstalledCols, EventKind::kInstalled, readInstalled,

@@ -91,6 +91,15 @@ TEST_F(HistoryStoreTest, AcceptedModelTermsRoundTripAndTheLatestWins) {
   ASSERT_TRUE(earlier);
   EXPECT_DOUBLE_EQ(earlier->model["profile"]["hull"]["compressibility_per_dbar"].get<double>(), 4.7e-6);
   EXPECT_FALSE(store.latestModelTerms("01-02-03", t0 - minutes{1}));
+  // Part of the configuration's record, in time order.
+  int n = 0;
+  for (const HistoryEvent& e : store.history("01-02-03")) {
+    if (e.kind != EventKind::kModelTerms) continue;
+    ++n;
+    EXPECT_EQ(toJson(e)["kind"], "model_terms");
+    EXPECT_TRUE(toJson(e)["record"]["model"].contains("profile"));
+  }
+  EXPECT_EQ(n, 2);
 }
 
 TEST_F(HistoryStoreTest, LastStateReportsPiecesErrorsAndTemperatureAge) {
