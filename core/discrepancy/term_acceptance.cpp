@@ -1,0 +1,84 @@
+#include "discrepancy/term_acceptance.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "discrepancy/residual_statistics.h"
+
+namespace auv::discrepancy::detail {
+
+TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, const HeldOutScorer& scorer,
+                           const TermSelection& ts, const std::vector<std::size_t>& cand, const Params& base,
+                           const ModelCheckOptions& o, ModelCheckResult& R) {
+  const auto& lib = termLibrary();
+  const std::vector<Channel>& simCh = scorer.channels();
+  const std::size_t SC = simCh.size();
+  const SelectionResult& sel = ts.sel;
+  const std::vector<double>& incl = ts.incl;
+  TermAcceptance out;
+  std::vector<std::size_t>& accepted = out.accepted;
+  HeldOut hoCur = scorer.base();
+  for (std::size_t step = 0; step < sel.selected.size(); ++step) {
+    const std::size_t k = static_cast<std::size_t>(sel.selected[step] - s.nN);
+    const std::size_t term = cand[k];
+    CandidateReport& c = R.candidates[k];
+    char buf[160];
+    if (incl[k] < o.min_inclusion) {
+      std::snprintf(buf, sizeof buf, "selected on all data but only in %.0f %% of bootstrap replicates (< %.0f %%)",
+                    100 * incl[k], 100 * o.min_inclusion);
+      c.status = buf;
+      continue;
+    }
+    std::vector<std::size_t> trial = accepted;
+    trial.push_back(term);
+    Params st = base;
+    for (std::size_t a : accepted) st.terms[a] = R.accepted[a];
+    const HeldOut ho = scorer.score(trial, st);
+    const double before = scorer.cost(hoCur), after = scorer.cost(ho);
+    if (!(after < before * (1.0 - o.min_sim_gain))) {
+      std::snprintf(buf, sizeof buf, "improves the equation error but not the held-out simulation error (cost %.4g -> %.4g)",
+                    before, after);
+      c.status = buf;
+      continue;
+    }
+    c.status = "accepted";
+    MissingPhysics mp;
+    mp.id = lib[term].id;
+    mp.unit = lib[term].unit;
+    mp.inclusion_probability = incl[k];
+    mp.delta_bic = sel.steps[step].delta_bic;
+    mp.t_value = sel.steps[step].t_value;
+    mp.heldout_gain = 1.0 - after / before;
+    // The channel the term helps most (relative to the base error).
+    double bestGain = -std::numeric_limits<double>::infinity();
+    for (std::size_t ch = 0; ch < SC; ++ch) {
+      if (!(hoCur.sim_n[ch] > 0)) continue;
+      const double g = (hoCur.sim_sse[ch] / hoCur.sim_n[ch] - ho.sim_sse[ch] / ho.sim_n[ch]) / scorer.reference(ch);
+      if (g > bestGain) {
+        bestGain = g;
+        mp.channel = simCh[ch];
+        mp.rms_before = rmsOf(hoCur.sim_sse[ch], hoCur.sim_n[ch]) * channelDisplayScale(simCh[ch]);
+        mp.rms_after = rmsOf(ho.sim_sse[ch], ho.sim_n[ch]) * channelDisplayScale(simCh[ch]);
+      }
+    }
+    for (std::size_t k2 = 0; k2 < hoCur.prior_z2.size(); ++k2)
+      if (ho.prior_z2[k2] < hoCur.prior_z2[k2] && hoCur.prior_z2[k2] > 4.0)
+        mp.evidence = "the flight data alone cannot separate it from " + R.nuisance_names[static_cast<std::size_t>(s.priors[k2].index)] +
+                      "; the independent measurement of that (prior) does: without the term the fit is " +
+                      std::to_string(static_cast<int>(std::lround(std::sqrt(hoCur.prior_z2[k2])))) + " sigma from it";
+    for (std::size_t l = 0; l < cand.size(); ++l)
+      if (l != k && std::abs(ts.coll.correlation(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(l))) >= o.collinear_threshold)
+        mp.confused_with.emplace_back(lib[cand[l]].id);
+    out.found.push_back(mp);
+    accepted.push_back(term);
+    // Provisional value for the next step's start.
+    const Fit f = fit(s, fitRows, accepted, st);
+    R.accepted = f.params.terms;
+    hoCur = ho;
+  }
+  return out;
+}
+
+}  // namespace auv::discrepancy::detail
