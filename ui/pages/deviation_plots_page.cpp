@@ -1,16 +1,13 @@
 #include "pages/deviation_plots_page.h"
 
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QFontMetricsF>
 #include <QGraphicsLayout>
 #include <QGridLayout>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QSettings>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtCharts/QChart>
@@ -23,9 +20,10 @@
 
 #include "analysis/mission_analysis.h"
 #include "common/input_error.h"
-#include "missionlog/interchange_csv.h"
 #include "plot/min_max_decimation.h"
 #include "plot/nice_axis.h"
+#include "plot/plotted_window_csv.h"
+#include "widgets/export_file_dialog.h"
 #include "widgets/inputs.h"
 #include "widgets/linked_chart_view.h"
 #include "wizard/operator_wizard.h"
@@ -35,31 +33,6 @@ namespace {
 
 QString q(const std::string& s) { return QString::fromStdString(s); }
 
-// A signed number with fixed decimals: "+1.46", "-0.02", "0.00".
-QString signedFixed(double v, int decimals) {
-  const QString t = fixed(v, decimals);
-  return (t.toDouble() > 0 ? QStringLiteral("+") : QString()) + t;
-}
-
-// "mean ± 95 % half-width unit", or "n/a".
-QString meanText(const analysis::MeanEstimate& m, int decimals, const QString& unit, bool sign = true) {
-  if (!m.valid() || !std::isfinite(m.mean)) return DeviationPlotsPage::tr("n/a");
-  const QString v = sign ? signedFixed(m.mean, decimals) : fixed(m.mean, decimals);
-  const QString ci = std::isfinite(m.ci95) ? QStringLiteral(" ± %1").arg(fixed(m.ci95, decimals)) : QString();
-  return v + ci + unit;
-}
-
-QString estimateText(const analysis::EstimatedValue& e, int decimals, const QString& unit) {
-  if (!e.known || !std::isfinite(e.value)) return DeviationPlotsPage::tr("not identifiable");
-  return QStringLiteral("%1 ± %2%3").arg(signedFixed(e.value, decimals), fixed(e.sigma, decimals), unit);
-}
-
-QString cellText(double mean, double ci, int decimals) {
-  if (!std::isfinite(mean)) return QStringLiteral("—");
-  return std::isfinite(ci) ? QStringLiteral("%1 ±%2").arg(signedFixed(mean, decimals), fixed(ci, decimals))
-                           : signedFixed(mean, decimals);
-}
-
 // The sample nearest to x (t ascending), or NaN.
 double nearest(const std::vector<double>& t, const std::vector<double>& v, double x) {
   if (t.empty()) return NAN;
@@ -67,15 +40,6 @@ double nearest(const std::vector<double>& t, const std::vector<double>& v, doubl
   std::size_t i = static_cast<std::size_t>(it - t.begin());
   if (i == t.size() || (i > 0 && x - t[i - 1] < t[i] - x)) --i;
   return v[i];
-}
-
-QLabel* resultLabel(const char* name) {
-  auto* l = new QLabel;
-  l->setObjectName(name);
-  l->setWordWrap(true);
-  l->setTextFormat(Qt::RichText);
-  l->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  return l;
 }
 
 QPushButton* button(const QString& text, const char* name, const QString& tip) {
@@ -95,20 +59,6 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
                  "double-click: whole log."));
   const QString titles[3] = {tr("Depth [m]"), tr("Pitch [°]"), tr("Roll [°]")};
   const char* names[3] = {"chart_depth", "chart_pitch", "chart_roll"};
-  net_ = resultLabel("net_buoyancy");
-  cg_ = resultLabel("cg_offset");
-  errors_ = resultLabel("errors");
-  water_ = resultLabel("water");
-  auto* summary = summary_grid_ = new QGridLayout;
-  summary->setHorizontalSpacing(16);
-  summary->setVerticalSpacing(2);
-  summary->addWidget(net_, 0, 0);
-  summary->addWidget(cg_, 0, 1);
-  summary->addWidget(errors_, 1, 0, 1, 2);
-  summary->addWidget(water_, 2, 0, 1, 2);
-  summary->setColumnStretch(0, 3);
-  summary->setColumnStretch(1, 2);
-
   charts_ = new QWidget;
   charts_->setObjectName("charts");
   auto* clay = new QVBoxLayout(charts_);
@@ -170,28 +120,9 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
     });
   }
 
-  segment_table_ = new QTableWidget(0, 5);
-  segment_table_->setObjectName("segments");
-  segment_table_->setHorizontalHeaderLabels(
-      {tr("#"), tr("min"), tr("Depth [m]"), tr("Pitch [°]"), tr("Roll [°]")});
-  segment_table_->verticalHeader()->hide();
-  segment_table_->verticalHeader()->setDefaultSectionSize(22);
-  // No horizontal scrolling: # and the time as wide as they need, the
-  // three error columns share the rest.
-  for (int c = 0; c < 5; ++c)
-    segment_table_->horizontalHeader()->setSectionResizeMode(c, c < 2 ? QHeaderView::ResizeToContents : QHeaderView::Stretch);
-  segment_table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  segment_table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-  segment_table_->setSelectionMode(QAbstractItemView::SingleSelection);
-  segment_table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  notes_ = new QLabel;
-  notes_->setObjectName("analysis_notes");
-  notes_->setWordWrap(true);
-  notes_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-  notes_->setTextFormat(Qt::RichText);
-  notes_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  QTableWidget* segment_table = segments_.widget();
   auto* scroll = new QScrollArea;
-  scroll->setWidget(notes_);
+  scroll->setWidget(summary_.notes());
   scroll->setWidgetResizable(true);
   scroll->setFrameShape(QFrame::NoFrame);
   info_ = new QLabel;
@@ -203,9 +134,9 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
   auto* slay = new QVBoxLayout(side);
   slay->setContentsMargins(0, 0, 0, 0);
   auto* seg_title = new QLabel(tr("Steady &segments used"));
-  seg_title->setBuddy(segment_table_);
+  seg_title->setBuddy(segment_table);
   slay->addWidget(seg_title);
-  slay->addWidget(segment_table_, 1);
+  slay->addWidget(segment_table, 1);
   slay->addWidget(scroll, 1);
   slay->addWidget(info_);
 
@@ -229,24 +160,21 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
   row->addWidget(export_csv_);
   auto* lay = new QVBoxLayout(this);
   lay->setSpacing(4);
-  lay->addLayout(summary);
+  lay->addLayout(summary_.grid());
   lay->addLayout(body, 1);
   lay->addLayout(row);
   lay->addWidget(status_);
   setTabOrder(plots_[kDepth].view, plots_[kPitch].view);
   setTabOrder(plots_[kPitch].view, plots_[kRoll].view);
-  setTabOrder(plots_[kRoll].view, segment_table_);
-  setTabOrder(segment_table_, reset_);
+  setTabOrder(plots_[kRoll].view, segment_table);
+  setTabOrder(segment_table, reset_);
   setTabOrder(reset_, export_png_);
   setTabOrder(export_png_, export_csv_);
   connect(reset_, &QPushButton::clicked, this, [this] { resetXRange(); });
   connect(export_png_, &QPushButton::clicked, this, [this] { exportPngDialog(); });
   connect(export_csv_, &QPushButton::clicked, this, [this] { exportCsvDialog(); });
-  connect(segment_table_, &QTableWidget::cellClicked, this, [this](int r, int) {
-    if (r < 0 || r >= static_cast<int>(segments_min_.size())) return;
-    const auto [a, b] = segments_min_[static_cast<std::size_t>(r)];
-    const double pad = std::max((b - a) * 0.15, 0.5);
-    setXRange(a - pad, b + pad);
+  connect(segment_table, &QTableWidget::cellClicked, this, [this](int r, int) {
+    if (const auto w = segments_.zoomWindow(r)) setXRange(w->first, w->second);
   });
 }
 
@@ -326,91 +254,12 @@ void DeviationPlotsPage::runAnalysis() {
 }
 
 void DeviationPlotsPage::showAnalysis() {
-  if (!state_.analysis) {
-    net_->setText(tr("<b>No analysis</b>: %1").arg(analysis_error_.toHtmlEscaped()));
-    net_->setStyleSheet("color: #b00020;");
-    cg_->clear();
-    errors_->clear();
-    water_->clear();
-    notes_->clear();
-    return;
-  }
-  net_->setStyleSheet(QString());
-  const analysis::AnalysisReport& r = *state_.analysis;
-  const bool g = state_.isGlider();
-  // A glider's net buoyancy line also carries the grams to add; its CG line is short.
-  // A glider's net buoyancy line also carries the grams to add: it gets the
-  // whole width, and the (short) CG line moves next to the errors.
-  summary_grid_->removeWidget(net_);
-  summary_grid_->removeWidget(cg_);
-  summary_grid_->removeWidget(errors_);
-  summary_grid_->addWidget(net_, 0, 0, 1, g ? 2 : 1);
-  summary_grid_->addWidget(errors_, 1, 0, 1, g ? 1 : 2);
-  summary_grid_->addWidget(cg_, g ? 1 : 0, 1);
-  // Gliders are ballasted to the gram, AUVs to kit pieces of 0.1 kg and up.
-  const int kg_dec = g ? 3 : 2;
-  QString net = tr("Net buoyancy: <b>%1</b>").arg(estimateText(r.net_buoyancy_kg, kg_dec, tr(" kg")));
-  if (r.net_buoyancy_kg.known && std::isfinite(r.net_buoyancy_kg.value)) {
-    const double v = std::round(r.net_buoyancy_kg.value * std::pow(10.0, kg_dec));
-    net += " " + (v > 0 ? tr("(too light, 1 σ)") : v < 0 ? tr("(too heavy, 1 σ)") : tr("(neutral, 1 σ)"));
-  }
-  if (r.mass_to_add_g.known && std::isfinite(r.mass_to_add_g.value))
-    net += tr("; add %1 for neutral at %2 kg/m³")
-               .arg(estimateText(r.mass_to_add_g, 0, tr(" g")))
-               .arg(r.target_density_kgm3, 0, 'f', 2);
-  net_->setText(net);
-  if (!r.cg_x_mm.known && !r.cg_y_mm.known)
-    cg_->setText(tr("CG − CB: <b>not identifiable</b> (see the notes)"));
-  else
-    cg_->setText(tr("CG − CB: x <b>%1</b>, y <b>%2</b>")
-                     .arg(estimateText(r.cg_x_mm, 1, tr(" mm")), estimateText(r.cg_y_mm, 1, tr(" mm"))));
-  errors_->setText(tr("Errors (95 %): depth %1 · pitch %2 · roll %3")
-                       .arg(meanText(r.depth_error_m, 2, tr(" m")), meanText(r.pitch_error_deg, 2, tr("°")),
-                            meanText(r.roll_deg, 2, tr("°"))));
-  water_->setText(tr("Water at %1: %2 · %3 · %4 (95 %)")
-                      .arg(meanText(r.depth_m, 1, tr(" m"), false), meanText(r.temperature_degC, 2, tr(" °C"), false),
-                           meanText(r.salinity_psu, 2, tr(" PSU"), false),
-                           meanText(r.density_kgm3, 2, tr(" kg/m³"), false)));
-  QStringList lines;
-  for (const auto& w : r.warnings) lines << QStringLiteral("⚠ %1").arg(q(w).toHtmlEscaped());
-  const std::pair<const char*, const analysis::EstimatedValue*> est[] = {
-      {QT_TR_NOOP("Net buoyancy"), &r.net_buoyancy_kg}, {QT_TR_NOOP("CG x"), &r.cg_x_mm}, {QT_TR_NOOP("CG y"), &r.cg_y_mm}};
-  for (const auto& [name, e] : est)
-    if (!e->known && !e->why_not.empty()) lines << tr("<b>%1</b>: %2").arg(tr(name), q(e->why_not).toHtmlEscaped());
-  if (!r.pitch_error_basis.empty()) lines << tr("Pitch error: %1").arg(q(r.pitch_error_basis).toHtmlEscaped());
-  for (const auto& n : r.notes) lines << QStringLiteral("<span style='color:#555'>%1</span>").arg(q(n).toHtmlEscaped());
-  notes_->setText(lines.join("<br>"));
+  summary_.show(state_.analysis ? &*state_.analysis : nullptr, state_.isGlider(), analysis_error_);
 }
 
 void DeviationPlotsPage::showSegments() {
-  segments_min_.clear();
-  segment_table_->setRowCount(0);
-  // A glide has no depth or pitch command to err from: its means instead.
-  const bool g = state_.isGlider();
-  segment_table_->setToolTip(
-      g ? tr("Each steady glide the analysis used (time in minutes): its mean depth and pitch, and the roll ± its "
-             "95 % interval. Click a row to zoom to it.")
-        : tr("Each steady segment the analysis used (time in minutes): mean error ± its 95 % interval (depth: "
-             "commanded − measured; pitch: measured − commanded; roll: as measured). Click a row to zoom to it."));
-  if (state_.analysis) {
-    for (const auto& s : state_.analysis->segments) {
-      if (!s.used) continue;
-      const int r = segment_table_->rowCount();
-      segment_table_->insertRow(r);
-      segments_min_.push_back({s.start_s / 60.0, s.end_s / 60.0});
-      const QString cells[5] = {QString::number(r + 1),
-                                QStringLiteral("%1–%2").arg(s.start_s / 60.0, 0, 'f', 1).arg(s.end_s / 60.0, 0, 'f', 1),
-                                g ? cellText(s.depth_m, NAN, 1) : cellText(s.depth_error_m, s.depth_error_ci95_m, 2),
-                                g ? cellText(s.pitch_deg, NAN, 1) : cellText(s.pitch_error_deg, s.pitch_error_ci95_deg, 2),
-                                cellText(s.roll_deg, s.roll_ci95_deg, 2)};
-      for (int c = 0; c < 5; ++c) {
-        auto* item = new QTableWidgetItem(cells[c]);
-        item->setTextAlignment(c == 0 ? Qt::AlignCenter : Qt::AlignRight | Qt::AlignVCenter);
-        segment_table_->setItem(r, c, item);
-      }
-    }
-  }
-  for (std::size_t i = 0; i < plots_.size(); ++i) plots_[i].view->setBands(segments_min_, i == kDepth);
+  segments_.show(state_.analysis ? &*state_.analysis : nullptr, state_.isGlider());
+  for (std::size_t i = 0; i < plots_.size(); ++i) plots_[i].view->setBands(segments_.ranges(), i == kDepth);
 }
 
 int DeviationPlotsPage::shadedSegments(int plot) const { return view(plot)->bandCount(); }
@@ -551,57 +400,23 @@ long DeviationPlotsPage::exportCsv(const QString& path) {
   for (const auto& p : plots_)
     for (const auto& t : p.traces)
       if (t.channel) channels.push_back(&log.channel(t.channel));
-  // Every logged row inside the visible window that has a plotted value.
-  const double a = x0_ * 60.0, b = x1_ * 60.0;
-  const auto lo = static_cast<std::size_t>(std::lower_bound(log.time.begin(), log.time.end(), a) - log.time.begin());
-  const auto hi = static_cast<std::size_t>(std::upper_bound(log.time.begin(), log.time.end(), b) - log.time.begin());
-  std::vector<std::size_t> rows;
-  for (std::size_t i = lo; i < hi; ++i) {
-    if (std::any_of(channels.begin(), channels.end(), [i](const LogChannel* c) { return !std::isnan(c->values[i]); }))
-      rows.push_back(i);
-  }
-  MissionLog out;
-  out.metadata = log.metadata;
-  out.setMetadata("exported", QStringLiteral("plotted channels, %1-%2 min of %3")
-                                  .arg(x0_, 0, 'f', 3)
-                                  .arg(x1_, 0, 'f', 3)
-                                  .arg(QFileInfo(q(state_.log_file)).fileName())
-                                  .toStdString());
-  out.time.reserve(rows.size());
-  for (std::size_t i : rows) out.time.push_back(log.time[i]);
-  for (const LogChannel* c : channels) {
-    LogChannel& o = out.addChannel(c->name, c->unit);
-    for (std::size_t k = 0; k < rows.size(); ++k) o.values[k] = c->values[rows[k]];
-  }
   try {
-    writeInterchangeCsv(out, path.toStdString());
+    return writePlottedWindowCsv(log, channels, x0_, x1_, QFileInfo(q(state_.log_file)).fileName(), path);
   } catch (const InputError& e) {
     status_->setText(tr("Not exported: %1").arg(q(e.what())));
     return -1;
   }
-  return static_cast<long>(rows.size());
 }
 
 void DeviationPlotsPage::exportPngDialog() {
-  QSettings settings;
-  const QString dir = settings.value("paths/last_export_folder").toString();
-  const QString base = QFileInfo(q(state_.log_file)).completeBaseName();
-  const QString file = QFileDialog::getSaveFileName(this, tr("Export the charts"), dir + "/" + base + "_plots.png",
-                                                    tr("PNG images (*.png)"));
-  if (file.isEmpty()) return;
-  settings.setValue("paths/last_export_folder", QFileInfo(file).absolutePath());
-  exportPng(file);
+  const QString file = askExportFile(this, tr("Export the charts"), state_.log_file, "_plots.png", tr("PNG images (*.png)"));
+  if (!file.isEmpty()) exportPng(file);
 }
 
 void DeviationPlotsPage::exportCsvDialog() {
-  QSettings settings;
-  const QString dir = settings.value("paths/last_export_folder").toString();
-  const QString base = QFileInfo(q(state_.log_file)).completeBaseName();
-  const QString file = QFileDialog::getSaveFileName(this, tr("Export the plotted data"),
-                                                    dir + "/" + base + "_window.csv", tr("CSV files (*.csv)"));
-  if (file.isEmpty()) return;
-  settings.setValue("paths/last_export_folder", QFileInfo(file).absolutePath());
-  exportCsv(file);
+  const QString file =
+      askExportFile(this, tr("Export the plotted data"), state_.log_file, "_window.csv", tr("CSV files (*.csv)"));
+  if (!file.isEmpty()) exportCsv(file);
 }
 
 }  // namespace auv::ui

@@ -4,12 +4,12 @@
 #include <optional>
 #include <vector>
 
+#include "widgets/analysis_summary.h"
+#include "widgets/segment_table.h"
 #include "wizard/wizard_state.h"
 
-class QGridLayout;
 class QLabel;
 class QPushButton;
-class QTableWidget;
 QT_BEGIN_NAMESPACE
 class QChart;
 class QLineSeries;
@@ -95,15 +95,9 @@ class DeviationPlotsPage : public QWizardPage {
   double x0_ = 0.0, x1_ = 1.0;
   std::optional<double> cross_;
   QString analysis_error_;
-  std::vector<std::pair<double, double>> segments_min_;  // operating segments, minutes
+  AnalysisSummary summary_;
+  SegmentTable segments_;  // the operating segments, shaded on the charts
   QWidget* charts_;
-  QGridLayout* summary_grid_;
-  QLabel* net_;
-  QLabel* cg_;
-  QLabel* errors_;
-  QLabel* water_;
-  QTableWidget* segment_table_;
-  QLabel* notes_;
   QLabel* info_;
   QLabel* readout_;
   QLabel* status_;

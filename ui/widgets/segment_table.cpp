@@ -1,0 +1,73 @@
+#include "widgets/segment_table.h"
+
+#include <QHeaderView>
+#include <QTableWidget>
+#include <algorithm>
+#include <cmath>
+
+#include "widgets/inputs.h"
+
+namespace auv::ui {
+namespace {
+
+QString cellText(double mean, double ci, int decimals) {
+  if (!std::isfinite(mean)) return QStringLiteral("—");
+  return std::isfinite(ci) ? QStringLiteral("%1 ±%2").arg(signedFixed(mean, decimals), fixed(ci, decimals))
+                           : signedFixed(mean, decimals);
+}
+
+}  // namespace
+
+SegmentTable::SegmentTable() {
+  table_ = new QTableWidget(0, 5);
+  table_->setObjectName("segments");
+  table_->setHorizontalHeaderLabels({tr("#"), tr("min"), tr("Depth [m]"), tr("Pitch [°]"), tr("Roll [°]")});
+  table_->verticalHeader()->hide();
+  table_->verticalHeader()->setDefaultSectionSize(22);
+  // No horizontal scrolling: # and the time as wide as they need, the
+  // three error columns share the rest.
+  for (int c = 0; c < 5; ++c)
+    table_->horizontalHeader()->setSectionResizeMode(c, c < 2 ? QHeaderView::ResizeToContents : QHeaderView::Stretch);
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  table_->setSelectionMode(QAbstractItemView::SingleSelection);
+  table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+}
+
+void SegmentTable::show(const analysis::AnalysisReport* report, bool glider) {
+  ranges_.clear();
+  table_->setRowCount(0);
+  // A glide has no depth or pitch command to err from: its means instead.
+  const bool g = glider;
+  table_->setToolTip(
+      g ? tr("Each steady glide the analysis used (time in minutes): its mean depth and pitch, and the roll ± its "
+             "95 % interval. Click a row to zoom to it.")
+        : tr("Each steady segment the analysis used (time in minutes): mean error ± its 95 % interval (depth: "
+             "commanded − measured; pitch: measured − commanded; roll: as measured). Click a row to zoom to it."));
+  if (!report) return;
+  for (const auto& s : report->segments) {
+    if (!s.used) continue;
+    const int r = table_->rowCount();
+    table_->insertRow(r);
+    ranges_.push_back({s.start_s / 60.0, s.end_s / 60.0});
+    const QString cells[5] = {QString::number(r + 1),
+                              QStringLiteral("%1–%2").arg(s.start_s / 60.0, 0, 'f', 1).arg(s.end_s / 60.0, 0, 'f', 1),
+                              g ? cellText(s.depth_m, NAN, 1) : cellText(s.depth_error_m, s.depth_error_ci95_m, 2),
+                              g ? cellText(s.pitch_deg, NAN, 1) : cellText(s.pitch_error_deg, s.pitch_error_ci95_deg, 2),
+                              cellText(s.roll_deg, s.roll_ci95_deg, 2)};
+    for (int c = 0; c < 5; ++c) {
+      auto* item = new QTableWidgetItem(cells[c]);
+      item->setTextAlignment(c == 0 ? Qt::AlignCenter : Qt::AlignRight | Qt::AlignVCenter);
+      table_->setItem(r, c, item);
+    }
+  }
+}
+
+std::optional<std::pair<double, double>> SegmentTable::zoomWindow(int row) const {
+  if (row < 0 || row >= static_cast<int>(ranges_.size())) return std::nullopt;
+  const auto [a, b] = ranges_[static_cast<std::size_t>(row)];
+  const double pad = std::max((b - a) * 0.15, 0.5);
+  return std::pair{a - pad, b + pad};
+}
+
+}  // namespace auv::ui
