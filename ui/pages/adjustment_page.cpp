@@ -75,15 +75,7 @@ AdjustmentPage::AdjustmentPage(WizardState& state) : state_(state) {
                              "Green: inside the band, red: outside."));
   prediction_->setFixedHeight(prediction_->horizontalHeader()->sizeHint().height() + 4 * 24 + 2 * prediction_->frameWidth());
 
-  messages_ = new QLabel;
-  messages_->setObjectName("messages");
-  messages_->setWordWrap(true);
-  messages_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-  messages_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(messages_);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
+  QScrollArea* scroll = makeMessageArea("messages", &messages_);
 
   auto* stepsLabel = new QLabel(tr("&Steps (tick each when done):"));
   checklist_ = new QListWidget;

@@ -54,15 +54,7 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   predicted_ = new QLabel;
   predicted_->setObjectName("predicted");
   predicted_->setWordWrap(true);
-  messages_ = new QLabel;
-  messages_->setObjectName("messages");
-  messages_->setWordWrap(true);
-  messages_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-  messages_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(messages_);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
+  QScrollArea* scroll = makeMessageArea("messages", &messages_);
   scroll->setMinimumHeight(90);
   save_status_ = makeErrorLabel("save_status");
   table_ = new QTableWidget(0, 3);

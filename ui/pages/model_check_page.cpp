@@ -117,16 +117,7 @@ ModelCheckPage::ModelCheckPage(WizardState& state) : state_(state) {
   terms_->setSelectionMode(QAbstractItemView::SingleSelection);
   terms_->setToolTip(tr("Physics the model lacks, best first. Tick a term to accept it (Space toggles the "
                         "selected row); accepted terms go into the vehicle model for the next mission."));
-  where_ = new QLabel;
-  where_->setObjectName("where");
-  where_->setWordWrap(true);
-  where_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-  where_->setTextFormat(Qt::RichText);
-  where_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(where_);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
+  QScrollArea* scroll = makeMessageArea("where", &where_, Qt::RichText);
   save_status_ = makeErrorLabel("save_status");
 
   auto* top = new QHBoxLayout;

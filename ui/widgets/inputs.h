@@ -3,11 +3,30 @@
 // tests, the unit as a suffix, a tooltip saying what to measure and how, and
 // a 32 px minimum height for gloved hands on a dockside laptop.
 #include <QDoubleSpinBox>
+#include <QFrame>
 #include <QLabel>
+#include <QScrollArea>
 #include <QString>
 #include <cmath>
 
 namespace auv::ui {
+
+// Messages that may outgrow their space: a word-wrapped, selectable label
+// (object name `name`, returned in *label) in a frameless scroll area.
+inline QScrollArea* makeMessageArea(const QString& name, QLabel** label, Qt::TextFormat format = Qt::AutoText) {
+  auto* l = new QLabel;
+  l->setObjectName(name);
+  l->setWordWrap(true);
+  l->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  l->setTextFormat(format);
+  l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(l);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  *label = l;
+  return scroll;
+}
 
 inline QDoubleSpinBox* makeSpin(const QString& name, double lo, double hi, int decimals, const QString& suffix,
                                 const QString& tip) {
