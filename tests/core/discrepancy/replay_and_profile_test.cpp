@@ -26,6 +26,21 @@ namespace {
 
 const std::string kVehicles = std::string(AUV_RESOURCE_DIR) + "/vehicles/";
 
+// A model-check result that found (and accepted) these terms, SI values.
+ModelCheckResult resultWithTerms(std::initializer_list<std::pair<const char*, double>> terms) {
+  ModelCheckResult r;
+  for (const auto& [id, si] : terms) {
+    const std::size_t k = *findTerm(id);
+    r.accepted[k] = si;
+    MissingPhysics m;
+    m.id = id;
+    m.unit = std::string(termLibrary()[k].unit);
+    m.value = si * termLibrary()[k].display_scale;
+    r.missing_physics.push_back(m);
+  }
+  return r;
+}
+
 struct Auv {
   VehicleProfile profile = loadVehicleProfile(kVehicles + "delphin2.json");
   sim::SimVehicle vehicle = sim::loadSimVehicle(profile, AUV_RESOURCE_DIR);
@@ -100,20 +115,8 @@ TEST(TermReplay, ParameterTermsChangeTheModel) {
 
 TEST(ProfileUpdate, TermsGoWhereTheLoadersReadThem) {
   const Auv& a = auvCase();
-  ModelCheckResult r;
-  auto add = [&](const char* id, double si) {
-    const std::size_t k = *findTerm(id);
-    r.accepted[k] = si;
-    MissingPhysics m;
-    m.id = id;
-    m.unit = std::string(termLibrary()[k].unit);
-    m.value = si * termLibrary()[k].display_scale;
-    r.missing_physics.push_back(m);
-  };
-  add("propeller_torque", 2e-6);
-  add("quadratic_pitch_damping", 0.5);
-  add("hull_compressibility", 3e-6);
-  add("vertical_current", 0.004);
+  const ModelCheckResult r = resultWithTerms(
+      {{"propeller_torque", 2e-6}, {"quadratic_pitch_damping", 0.5}, {"hull_compressibility", 3e-6}, {"vertical_current", 0.004}});
   const nlohmann::json doc = JsonReader::parseFile(a.profile.file);
   const nlohmann::json out = profileWithAcceptedTerms(doc, a.profile, r, "demo.csv");
   EXPECT_DOUBLE_EQ(out["hull"]["compressibility_per_dbar"].get<double>(), 3e-6);
@@ -170,16 +173,7 @@ TEST(ModelIt, OnlyTheTermsTheTechnicianAcceptsReachTheVehicle) {
   // (HUGIN's hydrodynamics live in resources/sim) are still there.
   const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("hugin1000");
   ASSERT_TRUE(v.sections.contains("hydrodynamics"));
-  ModelCheckResult r;
-  for (const auto& [id, si] : {std::pair<const char*, double>{"hull_compressibility", 3e-6}, {"vertical_current", 0.004}}) {
-    const std::size_t k = *findTerm(id);
-    r.accepted[k] = si;
-    MissingPhysics m;
-    m.id = id;
-    m.unit = std::string(termLibrary()[k].unit);
-    m.value = si * termLibrary()[k].display_scale;
-    r.missing_physics.push_back(m);
-  }
+  const ModelCheckResult r = resultWithTerms({{"hull_compressibility", 3e-6}, {"vertical_current", 0.004}});
   nlohmann::json stored;
   const VehicleProfile kept = vehicleWithAcceptedTerms(JsonReader::parseFile(v.file), v, r, {"hull_compressibility"},
                                                        "survey.csv", &stored);

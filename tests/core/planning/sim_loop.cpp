@@ -218,10 +218,7 @@ std::optional<int> SimHarness::classicMissions(const SimLoopCase& c, int max_mis
     in.estimate = trimEstimateFromReport(m.report, "closed-loop analysis");
     in.next = nextMissionWater(c.water2, 0.0, "operator");
     in.policy = PlanPolicy::Classic;
-    const PreMissionPlan p = planPreMission(profile_, in);
-    for (std::size_t i = 0; i < installed.size(); ++i) {
-      installed[i] = std::round((installed[i] + p.points[i].add_kg) * 1e4) / 1e4;
-    }
+    installed = applied(installed, planPreMission(profile_, in));
     m = fly(c, installed, c.water2, c.seed + 1 + static_cast<std::uint64_t>(k));
   }
   return std::nullopt;
