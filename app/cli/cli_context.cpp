@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "common/input_error.h"
+#include "missionlog/mission_files.h"
 #include "resource_paths.h"
 
 namespace fs = std::filesystem;
@@ -12,6 +13,22 @@ namespace fs = std::filesystem;
 namespace auv::cli {
 
 std::string vehiclesDir() { return app::vehiclesDir(); }
+
+namespace {
+std::vector<fs::path> logPaths(const std::vector<std::string>& logs) {
+  std::vector<fs::path> paths;
+  for (const auto& l : logs)
+    if (!l.empty()) paths.emplace_back(l);
+  if (paths.empty()) throw InputError("log", "missing", "give --log FILE or --log FOLDER (repeatable)");
+  return paths;
+}
+}  // namespace
+
+MissionLog readLogArgument(const std::vector<std::string>& logs, ReadReport& report) {
+  return readMission(logPaths(logs), ReadOptions{}, report);
+}
+
+std::string logArgumentLabel(const std::vector<std::string>& logs) { return missionLabel(logPaths(logs)); }
 
 void writeJson(const nlohmann::json& j, const std::string& path) {
   if (path == "-") {

@@ -4,6 +4,10 @@
 // environment lookups.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
+
+#include "missionlog/mission_log.h"
+#include "missionlog/read_report.h"
 
 namespace auv::cli {
 
@@ -11,5 +15,12 @@ std::string vehiclesDir();  // see app/common/resource_paths.h
 
 // Writes pretty JSON to `path` ("-" = stdout). Throws InputError if it cannot.
 void writeJson(const nlohmann::json& j, const std::string& path);
+
+// `--log` as given: files and folders, the flag repeatable (`--log DIR`,
+// `--log a.dbd --log a.ebd`), read as one mission by core readMission
+// (missionlog/mission_files.h).
+MissionLog readLogArgument(const std::vector<std::string>& logs, ReadReport& report);
+// The name of the log(s) in reports: "p1710100.nc", "raw", "a.dbd and 1 more".
+std::string logArgumentLabel(const std::vector<std::string>& logs);
 
 }  // namespace auv::cli

@@ -21,17 +21,18 @@ namespace auv::cli {
 namespace {
 
 struct AnalyzeOpts {
-  std::string vehicle, log, installed, bg_mm, target_density, coefficient_sigma, json;
+  std::vector<std::string> log;
+  std::string vehicle, installed, bg_mm, target_density, coefficient_sigma, json;
   bool no_classic = false;
 };
 
 int runAnalyze(const AnalyzeOpts& o) {
   if (o.vehicle.empty()) throw InputError("vehicle", "missing", "give --vehicle ID (see 'auvballast vehicles') or a profile .json");
-  if (o.log.empty()) throw InputError("log", "missing", "give --log FILE (a mission log, e.g. the interchange CSV)");
+  if (o.log.empty()) throw InputError("log", "missing", "give --log FILE or --log FOLDER (a mission log, e.g. the interchange CSV, or a folder of the vehicle's files)");
   const VehicleProfile v = VehicleCatalog(vehiclesDir()).load(o.vehicle);
 
   analysis::AnalysisOptions a;
-  a.log_name = std::filesystem::path(o.log).filename().string();
+  a.log_name = logArgumentLabel(o.log);
   if (!o.installed.empty())
     a.installed_kg = parseNumberList(o.installed, v.points.size(), "installed",
                                      "the kg of adjustment weight at each point during the mission, in profile order");
@@ -56,7 +57,7 @@ int runAnalyze(const AnalyzeOpts& o) {
   a.classic = !o.no_classic;
 
   ReadReport readReport;
-  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.log, ReadOptions{}, readReport);
+  const MissionLog log = readLogArgument(o.log, readReport);
   analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
   if (!readReport.clean()) {
     r.warnings.insert(r.warnings.begin(), "the log had problems on import (" + std::to_string(readReport.totalProblems()) +
@@ -94,7 +95,10 @@ Command addAnalyzeCommand(CLI::App& app) {
       "analyze", "Mission log -> operating segments, depth/pitch/roll errors, water, net buoyancy and CG offset");
   auto o = std::make_shared<AnalyzeOpts>();
   cmd->add_option("--vehicle", o->vehicle, "Vehicle id (see 'auvballast vehicles') or profile .json")->required();
-  cmd->add_option("--log", o->log, "Mission log (interchange CSV, docs/formats/mission-log-csv.md)")->required();
+  cmd->add_option("--log", o->log,
+                  "Mission log: a file (interchange CSV or a vehicle's own format) or a folder of a mission's files; "
+                  "repeat for several files")
+      ->required();
   cmd->add_option("--installed", o->installed,
                   "Adjustment mass at each point during the logged mission, kg, profile order (e.g. FS,FP,AS,AP)");
   cmd->add_option("--bg-mm", o->bg_mm,

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli_context.h"
 #include "commands.h"
 #include "common/input_error.h"
 #include "missionlog/interchange_csv.h"
@@ -14,14 +15,18 @@ namespace auv::cli {
 Command addConvertCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("convert", "Read any supported mission log and write it as interchange CSV");
   struct Opts {
-    std::string in, out;
+    std::vector<std::string> in;
+    std::string out;
   };
   auto o = std::make_shared<Opts>();
-  cmd->add_option("--log", o->in, "Input log (interchange CSV, delimited text, Slocum ASCII, glider NetCDF)")->required();
+  cmd->add_option("--log", o->in,
+                  "Input log (interchange CSV, delimited text, Slocum ASCII, glider NetCDF, SeaExplorer raw) or a "
+                  "folder of a mission's files; repeat for several files")
+      ->required();
   cmd->add_option("--out", o->out, "Output interchange CSV")->required();
   return {cmd, [o]() {
             ReadReport report;
-            const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o->in, ReadOptions{}, report);
+            const MissionLog log = readLogArgument(o->in, report);
             writeInterchangeCsv(log, o->out);
             std::cout << "wrote " << o->out << ": " << log.rowCount() << " rows, " << log.channels.size()
                       << " channels (read as " << report.format << ")\n";

@@ -28,15 +28,16 @@ namespace auv::cli {
 namespace {
 
 struct ModelCheckOpts {
-  std::string vehicle, log, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth, config, history;
+  std::vector<std::string> log;
+  std::string vehicle, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth, config, history;
   bool accept = false;
 };
 
 int runModelCheck(const ModelCheckOpts& o) {
   if (o.vehicle.empty()) throw InputError("vehicle", "missing", "give --vehicle ID (see 'auvballast vehicles') or a profile .json");
-  if (o.log.empty()) throw InputError("log", "missing", "give --log FILE (a mission log, e.g. the interchange CSV)");
+  if (o.log.empty()) throw InputError("log", "missing", "give --log FILE or --log FOLDER (a mission log, e.g. the interchange CSV, or a folder of the vehicle's files)");
   const VehicleProfile v = VehicleCatalog(vehiclesDir()).load(o.vehicle);
-  const std::string logName = std::filesystem::path(o.log).filename().string();
+  const std::string logName = logArgumentLabel(o.log);
 
   analysis::AnalysisOptions a;
   a.log_name = logName;
@@ -71,7 +72,7 @@ int runModelCheck(const ModelCheckOpts& o) {
   }
 
   ReadReport readReport;
-  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.log, ReadOptions{}, readReport);
+  const MissionLog log = readLogArgument(o.log, readReport);
   const analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
   nlohmann::json j = analysis::toJson(r);
   const std::unique_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(log, v, app::resourceDir(), setup);
@@ -127,7 +128,10 @@ Command addModelCheckCommand(CLI::App& app) {
       "fitted and proven on held-out simulation error");
   auto o = std::make_shared<ModelCheckOpts>();
   cmd->add_option("--vehicle", o->vehicle, "Vehicle id (see 'auvballast vehicles') or profile .json")->required();
-  cmd->add_option("--log", o->log, "Mission log (interchange CSV, docs/formats/mission-log-csv.md)")->required();
+  cmd->add_option("--log", o->log,
+                  "Mission log: a file (interchange CSV or a vehicle's own format) or a folder of a mission's files; "
+                  "repeat for several files")
+      ->required();
   cmd->add_option("--json", o->json, "Write the JSON report (analysis + missing_physics) here ('-' = stdout instead of text)");
   cmd->add_flag("--accept", o->accept, "Write the accepted terms into a copy of the vehicle profile");
   cmd->add_option("--config", o->config,

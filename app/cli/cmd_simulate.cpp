@@ -29,7 +29,8 @@ using sim::SimTrace;
 using sim::WaterColumn;
 
 struct SimulateOpts {
-  std::string vehicle, plan, replay, out, installed, ballast_error, env, seed, interval, drive = "auto";
+  std::vector<std::string> replay;
+  std::string vehicle, plan, out, installed, ballast_error, env, seed, interval, drive = "auto";
 };
 
 std::string requireVehicle(const SimulateOpts& o, const std::string& from_input, const std::string& input_name) {
@@ -131,7 +132,8 @@ int runPlan(const SimulateOpts& o) {
 
 int runReplay(const SimulateOpts& o) {
   ReadReport report;
-  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.replay, ReadOptions{}, report);
+  const MissionLog log = readLogArgument(o.replay, report);
+  const std::string replayName = o.replay.size() == 1 ? o.replay.front() : logArgumentLabel(o.replay);
   const std::string* logged_vehicle = log.metadataValue("vehicle");
   const VehicleProfile v =
       VehicleCatalog(vehiclesDir()).load(requireVehicle(o, logged_vehicle ? *logged_vehicle : "", "log"));
@@ -162,11 +164,11 @@ int runReplay(const SimulateOpts& o) {
   const sim::ReplayDrive drive = sim::resolveReplayDrive(sv.model, log, ro.drive);
   ro.drive = drive;
   const SimTrace tr = sim::replay(sv.model, sv.autopilot, water, log, ro);
-  sim::SimLogInfo info{v.id, "replay", o.replay, 0, sv.model.thruster_count, installed,
+  sim::SimLogInfo info{v.id, "replay", replayName, 0, sv.model.thruster_count, installed,
                        {{"replay_drive", sim::replayDriveName(drive)}}};
   sim::writeSimulatedLog(tr, info, o.out);
   if (!report.clean()) std::cout << report.summary() << "\n";
-  std::printf("replayed %s driven by its %s\n", o.replay.c_str(),
+  std::printf("replayed %s driven by its %s\n", replayName.c_str(),
               drive == sim::ReplayDrive::Actuators ? "actuators (elevator, rudder, propeller)"
               : drive == sim::ReplayDrive::PitchCommands ? "pitch commands"
                                                          : "depth commands");
@@ -183,7 +185,9 @@ Command addSimulateCommand(CLI::App& app) {
   cmd->add_option("--vehicle", o->vehicle,
                   "Vehicle id (see 'auvballast vehicles') or profile .json; default: the plan's or log's vehicle");
   cmd->add_option("--plan", o->plan, "Mission plan (docs/formats/mission-plan.md)");
-  cmd->add_option("--replay", o->replay, "Recorded mission log to re-fly with its own actuators or commands");
+  cmd->add_option("--replay", o->replay,
+                  "Recorded mission log (file, or folder of a mission's files; repeatable) to re-fly with its own "
+                  "actuators or commands");
   cmd->add_option("--out", o->out, "Where to write the simulated log (interchange CSV)")->required();
   cmd->add_option("--installed", o->installed,
                   "Adjustment mass at each point, kg, profile order (e.g. FS,FP,AS,AP); overrides the plan's");

@@ -8,15 +8,18 @@
 #include "missionlog/delimited_text_reader.h"
 #include "missionlog/interchange_csv.h"
 #include "missionlog/netcdf_reader.h"
+#include "missionlog/seaexplorer_raw_reader.h"
 #include "missionlog/slocum_ascii_reader.h"
 
 namespace auv {
 
 LogReaderRegistry LogReaderRegistry::withBuiltinReaders() {
   LogReaderRegistry r;
-  // Binary and tagged formats first (magic bytes), then the interchange CSV,
+  // Binary and tagged formats first (magic bytes; SeaExplorer's header line
+  // before the generic text reader, which would take a plain one), then the interchange CSV,
   // then the generic text reader, which would accept an interchange file too.
   r.add(std::make_unique<GliderNetcdfReader>());
+  r.add(std::make_unique<SeaExplorerRawReader>());
   r.add(std::make_unique<SlocumAsciiReader>());
   r.add(std::make_unique<InterchangeCsvReader>());
   r.add(std::make_unique<DelimitedTextReader>());

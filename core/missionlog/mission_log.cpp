@@ -1,6 +1,7 @@
 #include "missionlog/mission_log.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
@@ -28,6 +29,24 @@ void MissionLog::setMetadata(std::string key, std::string value) {
       return;
     }
   metadata.push_back({std::move(key), std::move(value)});
+}
+
+std::map<std::string, double> MissionLog::numericMetadata(std::string_view prefix) const {
+  std::map<std::string, double> out;
+  for (const auto& m : metadata) {
+    if (m.key.compare(0, prefix.size(), prefix) != 0 || out.count(m.key)) continue;
+    double v = 0;
+    const char* end = m.value.data() + m.value.size();
+    const auto r = std::from_chars(m.value.data(), end, v);
+    if (r.ec == std::errc() && r.ptr == end && std::isfinite(v)) out.emplace(m.key, v);
+  }
+  return out;
+}
+
+std::map<std::string, double> MissionLog::seagliderConstants() const {
+  std::map<std::string, double> out = numericMetadata("sg_cal_");
+  out.merge(numericMetadata("log_"));
+  return out;
 }
 
 std::optional<double> MissionLog::startEpochSeconds() const {

@@ -6,6 +6,7 @@
 // which it was not sampled, and each channel's own time base is the set of
 // rows where it is valid (see `series`).
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -52,6 +53,20 @@ class MissionLog {
   const std::string* metadataValue(std::string_view key) const;
   // Replaces the first entry with this key or appends one.
   void setMetadata(std::string key, std::string value);
+  // The metadata entries whose key starts with `prefix` and whose value is a
+  // finite number, by their whole key.
+  std::map<std::string, double> numericMetadata(std::string_view prefix) const;
+  // The constants a Seaglider log carries (GliderNetcdfReader puts them in
+  // the metadata, so they also survive the interchange CSV): the basestation
+  // calibration `sg_cal_*` (sg_cal_mass [kg], sg_cal_volmax [cm3],
+  // sg_cal_hd_a/b/c, sg_cal_abs_compress [1/dbar], sg_cal_therm_expan
+  // [1/degC], sg_cal_temp_ref [degC], sg_cal_rho0 [kg/m3] ...) and the
+  // parameters the glider flew with, `log_*` (log_C_VBD, log_VBD_CNV,
+  // log_C_PITCH, log_PITCH_CNV, log_MASS [g], log_HD_A ...), by their names
+  // in the file and in the file's units. A mission of several dives has the
+  // first dive's values (readMission keeps the first file's metadata). Empty
+  // for logs of other vehicles.
+  std::map<std::string, double> seagliderConstants() const;
   // `# start:` as seconds since 1970 UTC, if present and a valid ISO 8601 time.
   std::optional<double> startEpochSeconds() const;
 

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <optional>
 #include <set>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "common/input_error.h"
+#include "missionlog/detail/arrival_order.h"
 #include "missionlog/detail/memory_guard.h"
 #include "missionlog/detail/netcdf_channel_names.h"
 #include "missionlog/detail/netcdf_header_check.h"
@@ -60,11 +62,45 @@ class NetcdfParser {
   MissionLog read();
 
  private:
+  void addSeagliderConstants(const std::vector<NcVariable>& vars,
+                             const std::map<int, std::pair<std::string, std::size_t>>& dims,
+                             std::vector<MetadataEntry>& meta);
   std::string file_;
   const ReadOptions& opt_;
   ReadReport& rep_;
   NetcdfFile nc_;
 };
+
+// The Seaglider's constants into the metadata, under their names in the
+// file: the calibration (`sg_cal_mass`, `sg_cal_volmax`, `sg_cal_hd_a` ...)
+// and the parameters the glider flew the dive with (`log_C_VBD`, `log_MASS`,
+// `log_HD_A` ...; text ones such as `log_ID` as text). MissionLog::
+// seagliderConstants() gives the numeric ones back as a map.
+void NetcdfParser::addSeagliderConstants(const std::vector<NcVariable>& vars,
+                                         const std::map<int, std::pair<std::string, std::size_t>>& dims,
+                                         std::vector<MetadataEntry>& meta) {
+  constexpr std::size_t kMaxText = 200;
+  for (const NcVariable& v : vars) {
+    const bool cal = v.name.rfind("sg_cal_", 0) == 0, log = v.name.rfind("log_", 0) == 0;
+    if (!cal && !log) continue;
+    if (v.dims.empty() && isNumericType(v.type)) {
+      double x = 0;
+      if (nc_get_var_double(nc_.id(), v.id, &x) == NC_NOERR && std::isfinite(x)) {
+        meta.push_back({v.name, numberText(x)});
+        if (v.name == "sg_cal_mass") meta.push_back({"mass_kg", numberText(x)});
+      }
+    } else if (v.type == NC_CHAR && v.dims.size() == 1) {
+      const auto d = dims.find(v.dims[0]);
+      if (d == dims.end() || d->second.second == 0 || d->second.second > kMaxText) continue;
+      std::string text(d->second.second, '\0');
+      if (nc_get_var_text(nc_.id(), v.id, text.data()) != NC_NOERR) continue;
+      text.resize(std::strlen(text.c_str()));
+      for (char& c : text)
+        if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+      meta.push_back({v.name, text});
+    }
+  }
+}
 
 MissionLog NetcdfParser::read() {
   int ndims = 0, nvars = 0;
@@ -99,14 +135,8 @@ MissionLog NetcdfParser::read() {
   std::vector<MetadataEntry> meta;
   meta.push_back({"netcdf_flavour", seaglider ? "Seaglider basestation" : "IOOS/OG1 trajectory"});
   nc_.globalMetadata(meta);
-  for (const NcVariable& v : vars)  // Seaglider calibration constants: sg_cal_mass etc.
-    if (v.dims.empty() && isNumericType(v.type) && v.name.rfind("sg_cal_", 0) == 0) {
-      double x = 0;
-      if (nc_get_var_double(nc_.id(), v.id, &x) == NC_NOERR && std::isfinite(x)) {
-        meta.push_back({v.name, numberText(x)});
-        if (v.name == "sg_cal_mass") meta.push_back({"mass_kg", numberText(x)});
-      }
-    }
+  nc_.setQuietQc(seaglider);
+  addSeagliderConstants(vars, dims, meta);
 
   // One table per dimension that has a CF time coordinate.
   std::vector<LogTable> tables;
@@ -160,6 +190,9 @@ MissionLog NetcdfParser::read() {
       channelsFound.insert(c.name);
       t.columns.push_back(std::move(c));
     }
+    // A GC state change is logged as two records at one instant (the state
+    // left, the state entered); the entered one holds from then on.
+    if (seaglider && dimName == "gc_state") detail::mergeSameTimeRows(t, detail::SameTimeRows::kLaterWins, rep_);
     if (seaglider && dimName == "sg_data_point")
       for (const auto& e : meta)
         if (e.key == "nc_dive_number") {
@@ -199,6 +232,7 @@ MissionLog NetcdfParser::read() {
   const std::string missing = missingChannels(channelsFound);
   if (!missing.empty()) meta.push_back({"missing_channels", missing});
   if (!notImported.empty()) meta.push_back({"not_imported", "dimensions without a time coordinate: " + notImported});
+  if (!nc_.qcSummary().empty()) meta.push_back({"qc_blanked", nc_.qcSummary() + " values flagged bad by the file's own QC"});
   merged.metadata = std::move(meta);
   return finishTable(std::move(merged), rep_, false);
 }

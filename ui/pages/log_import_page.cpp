@@ -15,6 +15,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QUrl>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -84,9 +85,12 @@ LogImportPage::LogImportPage(WizardState& state) : state_(state) {
   setAcceptDrops(true);
   path_ = new QLineEdit;
   path_->setObjectName("log_path");
-  path_->setToolTip(tr("The mission log file: the vehicle's log converted to the mission-log CSV."));
+  path_->setToolTip(tr("The mission log: a file, several files of one mission separated by \"; \", or the "
+                       "folder the vehicle's files are in (type or paste it, or drop the folder here)."));
   path_->setMinimumHeight(32);
-  browse_ = button(tr("&Browse…"), "browse", tr("Choose the log file."));
+  browse_ = button(tr("&Browse…"), "browse",
+                   tr("Choose the log file, or several files of one mission (they are merged on time)."));
+
   import_ = button(tr("&Import"), "import", tr("Read the file named on the left."));
   map_ = button(tr("&Map columns…"), "map_columns",
                 tr("Say which column of a vendor text log is the time, the depth, the pitch… and read it again."));
@@ -210,20 +214,27 @@ void LogImportPage::initializePage() {
 void LogImportPage::browse() {
   QSettings settings;
   const QString dir = settings.value("paths/last_log_folder").toString();
-  const QString file = QFileDialog::getOpenFileName(this, tr("Mission log"), dir,
-                                                    tr("Mission logs (*.csv *.txt *.log);;All files (*)"));
-  if (!file.isEmpty()) startImport(file);
+  const QStringList files = QFileDialog::getOpenFileNames(
+      this, tr("Mission log"), dir,
+      tr("Mission logs (*.csv *.txt *.log *.asc *.dba *.nc *.gz *.dbd *.ebd *.sbd *.tbd *.mbd *.nbd *.dcd *.ecd "
+         "*.scd *.tcd);;All files (*)"));
+  // Several files of one mission travel as one path list (LogImportJob splits it).
+  if (!files.isEmpty()) startImport(files.join(kLogPathSeparator));
 }
 
 void LogImportPage::dragEnterEvent(QDragEnterEvent* e) {
   const auto urls = e->mimeData()->urls();
-  if (urls.size() == 1 && urls.first().isLocalFile()) e->acceptProposedAction();
+  if (!urls.isEmpty() && std::all_of(urls.begin(), urls.end(), [](const QUrl& u) { return u.isLocalFile(); }))
+    e->acceptProposedAction();
 }
 
 void LogImportPage::dropEvent(QDropEvent* e) {
   const auto urls = e->mimeData()->urls();
-  if (urls.size() == 1 && urls.first().isLocalFile()) {
-    startImport(urls.first().toLocalFile());
+  QStringList files;
+  for (const QUrl& u : urls)
+    if (u.isLocalFile()) files << u.toLocalFile();
+  if (!files.isEmpty() && files.size() == urls.size()) {
+    startImport(files.join(kLogPathSeparator));
     e->acceptProposedAction();
   }
 }
@@ -237,7 +248,9 @@ void LogImportPage::startImport(const QString& path, std::optional<ColumnMapping
     if (!problem.isEmpty()) mapping_note = tr("The saved column mapping is damaged and was not used: %1").arg(problem);
   }
   path_->setText(path);
-  QSettings().setValue("paths/last_log_folder", QFileInfo(path).absolutePath());
+  const QStringList paths = splitLogPaths(path);
+  const QFileInfo first(paths.value(0, path));
+  QSettings().setValue("paths/last_log_folder", first.isDir() ? first.absoluteFilePath() : first.absolutePath());
   state_.log.reset();
   state_.log_report.reset();
   state_.log_format.clear();
@@ -249,7 +262,8 @@ void LogImportPage::startImport(const QString& path, std::optional<ColumnMapping
   summary_->clear();
   problems_->clear();
   status_->setStyleSheet(QString());
-  status_->setText(tr("Reading %1…").arg(QFileInfo(path).fileName()) +
+  status_->setText(tr("Reading %1…").arg(paths.size() > 1 ? tr("%1 and %2 more").arg(first.fileName()).arg(paths.size() - 1)
+                                                           : first.fileName()) +
                    (mapping_note.isEmpty() ? QString() : "\n" + mapping_note));
   progress_->setValue(0);
   cancel_->setEnabled(true);

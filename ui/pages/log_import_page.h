@@ -22,7 +22,8 @@ namespace auv::ui {
 class ColumnMappingDialog;
 
 // Post mission, step 1: choose the mission log (file dialog or drag and
-// drop), let the registry recognise its format and read it in a worker
+// drop; several files of one mission or a folder of them are read as one
+// mission, see missionlog/mission_files.h), let the registry recognise its format and read it in a worker
 // thread with a progress bar and Cancel, then say what was read and what was
 // skipped and why (ReadReport). A vendor text log whose columns the reader
 // cannot map opens the column-mapping dialog (also "Map columns…"); a mapping

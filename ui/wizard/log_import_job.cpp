@@ -1,14 +1,24 @@
 #include "wizard/log_import_job.h"
 
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QtConcurrent/QtConcurrent>
 
 #include "common/input_error.h"
 #include "missionlog/delimited_text_reader.h"
 #include "missionlog/log_reader.h"
+#include "missionlog/mission_files.h"
 #include "missionlog/read_options.h"
 
 namespace auv::ui {
+
+QStringList splitLogPaths(const QString& text) {
+  if (text.trimmed().isEmpty() || QFileInfo::exists(text)) return {text};
+  QStringList out;
+  for (const QString& part : text.split(';'))
+    if (!part.trimmed().isEmpty()) out << part.trimmed();
+  return out;
+}
 
 LogImportJob::LogImportJob(QObject* parent) : QObject(parent) {
   // The worker only stores its progress; the UI thread polls it. A signal per
@@ -50,15 +60,32 @@ void LogImportJob::start(const QString& path, std::optional<ColumnMapping> mappi
   permille_ = std::make_shared<std::atomic<int>>(0);
   last_percent_ = -1;
   const std::string file = path.toStdString();
+  std::vector<std::filesystem::path> mission;
+  const QStringList parts = splitLogPaths(path);
+  if (parts.size() > 1 || QFileInfo(path).isDir())
+    for (const QString& p : parts) mission.emplace_back(p.toStdString());
   const std::size_t block = block_bytes_;
   auto cancel = cancel_;
   auto permille = permille_;
-  watcher_.setFuture(QtConcurrent::run([file, block, cancel, permille, mapping = std::move(mapping)]() {
+  watcher_.setFuture(QtConcurrent::run([file, mission, block, cancel, permille, mapping = std::move(mapping)]() {
     LogImportOutcome out;
     QElapsedTimer clock;
     clock.start();
     try {
       const LogReaderRegistry registry = LogReaderRegistry::withBuiltinReaders();
+      ReadOptions options;
+      options.block_bytes = block;
+      options.progress = [cancel, permille](double fraction) {
+        permille->store(static_cast<int>(fraction * 1000.0));
+        return !cancel->load();
+      };
+      if (!mission.empty()) {  // a folder or several files: one mission, no column mapping
+        out.log = std::make_shared<MissionLog>(readMission(mission, options, out.report, registry));
+        out.format = out.report.format;
+        out.status = LogImportOutcome::Status::kOk;
+        out.seconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
+        return out;
+      }
       const LogReader* reader = registry.find(file);
       std::optional<DelimitedTextReader> mapped;
       if (mapping && (!reader || reader->formatName() == DelimitedTextReader().formatName())) {
@@ -73,12 +100,6 @@ void LogImportJob::start(const QString& path, std::optional<ColumnMapping> mappi
                          {file, 0, 0});
       }
       out.format = reader->formatName();
-      ReadOptions options;
-      options.block_bytes = block;
-      options.progress = [cancel, permille](double fraction) {
-        permille->store(static_cast<int>(fraction * 1000.0));
-        return !cancel->load();
-      };
       auto log = std::make_shared<MissionLog>(reader->read(file, options, out.report));
       out.log = std::move(log);
       out.status = LogImportOutcome::Status::kOk;

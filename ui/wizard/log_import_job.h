@@ -5,6 +5,7 @@
 // turns into ReadCancelled (nothing partial is kept).
 #include <QFutureWatcher>
 #include <QObject>
+#include <QStringList>
 #include <QTimer>
 #include <atomic>
 #include <memory>
@@ -16,6 +17,13 @@
 #include "missionlog/read_report.h"
 
 namespace auv::ui {
+
+// Several files of one mission in one path text (the wizard's line edit and
+// its saved state hold one string): "a.dbd; a.ebd".
+inline const QString kLogPathSeparator = QStringLiteral("; ");
+// The paths in `text`: itself when it names an existing file or folder,
+// else its `;`-separated parts.
+QStringList splitLogPaths(const QString& text);
 
 struct LogImportOutcome {
   enum class Status { kOk, kCancelled, kFailed } status = Status::kFailed;
@@ -35,7 +43,8 @@ class LogImportJob : public QObject {
 
   // Starts reading `path`; ignored while a read is running. With a column
   // mapping, a file the registry takes for vendor text (or does not
-  // recognise at all) is read through it; other formats ignore it.
+  // recognise at all) is read through it; other formats ignore it. A folder
+  // or several files (splitLogPaths) are read as one mission (readMission).
   void start(const QString& path, std::optional<ColumnMapping> mapping = std::nullopt);
   void cancel();
   bool running() const;

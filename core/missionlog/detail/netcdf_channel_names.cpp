@@ -26,11 +26,19 @@ constexpr VarRule kSeagliderRules[] = {
     {"eng_pitchAng", "pitch"},
     {"eng_rollAng", "roll"},
     {"eng_head", "heading"},
-    {"eng_vbdCC", "pump_volume"},
+    // basestation gives eng_vbdCC no unit; it is the VBD volume in cm3.
+    {"eng_vbdCC", "pump_volume", 1.0, {}, "cm3"},
     // Seaglider counts the pitch mass positive aft (nose up); the format
     // counts battery_position positive forward (nose down).
     {"eng_pitchCtl", "battery_position", -1.0},
     {"eng_rollCtl", "roll_mass"},
+    // GC (guidance and control) commands at the start of each motor event;
+    // basestation labels all three "cm": the VBD one is cm3, the roll one deg.
+    {"gc_vbd_ctl", "pump_volume_cmd", 1.0, {}, "cm3"},
+    {"gc_pitch_ctl", "battery_position_cmd", -1.0},
+    {"gc_roll_ctl", "roll_mass_cmd", 1.0, {}, "deg"},
+    {"log_gps_lat", "gps_lat"},
+    {"log_gps_lon", "gps_lon"},
     {"temperature", "temperature"},
     {"salinity", "salinity"},
     {"conductivity", "conductivity"},
@@ -52,6 +60,16 @@ constexpr VarRule kTrajectoryRules[] = {
     {"CNDC", "conductivity"},   {"conductivity", "conductivity"},
     {"PSAL", "salinity"},       {"salinity", "salinity"},
     {"DENSITY", "density"},     {"density", "density"},
+    // OG1.0 vocabulary (OceanGliders format 1.0): the glider's own attitude
+    // sensors and actuators.
+    {"GLIDER_PITCH", "pitch"},  {"GLIDER_ROLL", "roll"},        {"GLIDER_HEADING", "heading"},
+    {"HEADING_CMD", "heading_cmd"},
+    {"VBD_CC", "pump_volume"},  {"VBD", "pump_volume"},         {"BALLAST_VOLUME", "pump_volume"},
+    {"VBD_CMD", "pump_volume_cmd"},
+    {"BATTERY_POSITION", "battery_position"},                   {"PITCH_MASS_POSITION", "battery_position"},
+    {"ROLL_MASS", "roll_mass"}, {"ALTITUDE", "altitude"},       {"ALTI", "altitude"},
+    {"GLIDER_SPEED", "speed"},  {"SPEED_THROUGH_WATER", "speed"},
+    {"DEPTH_CMD", "depth_cmd"},
 };
 
 // CF standard names, for variables the tables above do not name.
@@ -91,8 +109,12 @@ std::vector<std::pair<std::size_t, ChannelName>> nameChannels(const std::vector<
     ruleOf[it->second] = &r;
     taken.insert(std::string(r.channel));
   }
+  // Seaglider files name their sensors; a CF standard name there is shared by
+  // the vehicle's, the CT sail's and the ADCP's depth or pressure, which
+  // would all claim one channel. Their own names keep them apart.
   std::map<std::size_t, std::string> standardOf;
   for (std::size_t k : members) {
+    if (seaglider) break;
     if (ruleOf.count(k) || k == timeVar) continue;
     for (const auto& [sn, ch] : kStandardNames)
       if (vars[k].standard_name == sn && !taken.count(std::string(ch))) {

@@ -156,6 +156,10 @@ void NetcdfFile::applyQc(const NcVariable& v, const NcVariable& qc, std::vector<
   }
   if (!blanked) return;
   rep_.cells_blanked += blanked;
+  if (quietQc_) {
+    qcSummary_ += (qcSummary_.empty() ? "" : ", ") + v.name + " " + std::to_string(blanked);
+    return;
+  }
   reportProblem(rep_, opt_, ReadProblemKind::kValueOutOfRange, {file_, 0, 0}, v.name,
                 std::to_string(blanked) + " values flagged bad in " + qc.name + " (3, 4, 6, 7 or 9); treated as not sampled",
                 "nothing to do: the file's own quality control rejected them");

@@ -46,8 +46,14 @@ class NetcdfFile {
   // The first `n` values; values outside valid_range are blanked and noted,
   // fills are not (they are the file's way of saying "not sampled").
   std::vector<double> values(const NcVariable& v, std::size_t n, bool applyPacking);
-  // Blanks the values whose QC flag in `qc` says bad, and notes how many.
+  // Blanks the values whose QC flag in `qc` says bad, and notes how many
+  // (as a problem, or only in qcSummary() once setQuietQc(true)).
   void applyQc(const NcVariable& v, const NcVariable& qc, std::vector<double>& data, std::size_t n);
+  // Seaglider basestation files flag the surface and apogee samples of every
+  // dive: routine, nothing a technician can act on, so not a problem.
+  void setQuietQc(bool quiet) { quietQc_ = quiet; }
+  // "temperature 23, salinity 32" for the quietly blanked values ("" = none).
+  const std::string& qcSummary() const { return qcSummary_; }
   // The global attributes as `nc_<name>` metadata (text, or one number).
   void globalMetadata(std::vector<MetadataEntry>& out) const;
 
@@ -56,6 +62,8 @@ class NetcdfFile {
   std::string file_;
   const ReadOptions& opt_;
   ReadReport& rep_;
+  bool quietQc_ = false;
+  std::string qcSummary_;
 };
 
 }  // namespace auv::detail
