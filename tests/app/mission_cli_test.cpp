@@ -44,7 +44,7 @@ TEST(MissionCli, RepeatedLogFlagsAreMerged) {
 TEST(MissionCli, MissingFolderIsAClearError) {
   const auto r = runCli("analyze --vehicle slocum_g2 --log " + tmp("no_such_folder"));
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("no such file or folder"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("No such file"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("no_such_folder"), std::string::npos) << r.err;
 }
 
