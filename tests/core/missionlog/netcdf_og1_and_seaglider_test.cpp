@@ -101,7 +101,7 @@ TEST(GliderNetcdfNames, SeagliderBasestationStructureIsNoWarning) {
     w.put(gstate, {1, 2, 5, 6});
     w.put(mass, {56.69});
     w.put(cvbd, {2680});
-    w.putText(id, "171");
+    w.putText(id, "SG17");
     w.close();
   }
   ReadReport r;
@@ -121,7 +121,7 @@ TEST(GliderNetcdfNames, SeagliderBasestationStructureIsNoWarning) {
   const auto k = log.seagliderConstants();
   EXPECT_EQ(k.at("sg_cal_mass"), 56.69);
   EXPECT_EQ(k.at("log_C_VBD"), 2680.0);
-  EXPECT_EQ(*log.metadataValue("log_ID"), "171");
+  EXPECT_EQ(*log.metadataValue("log_ID"), "SG17");
   EXPECT_EQ(k.count("log_ID"), 0u);  // text, not a number
   fs::remove(p);
 }
