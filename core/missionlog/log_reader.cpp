@@ -9,6 +9,7 @@
 #include "missionlog/interchange_csv.h"
 #include "missionlog/netcdf_reader.h"
 #include "missionlog/slocum_ascii_reader.h"
+#include "missionlog/slocum_binary_reader.h"
 
 namespace auv {
 
@@ -17,6 +18,8 @@ LogReaderRegistry LogReaderRegistry::withBuiltinReaders() {
   // Binary and tagged formats first (magic bytes), then the interchange CSV,
   // then the generic text reader, which would accept an interchange file too.
   r.add(std::make_unique<GliderNetcdfReader>());
+  // Before the dbd2asc text reader: both files start with `dbd_label:`.
+  r.add(std::make_unique<SlocumBinaryReader>());
   r.add(std::make_unique<SlocumAsciiReader>());
   r.add(std::make_unique<InterchangeCsvReader>());
   r.add(std::make_unique<DelimitedTextReader>());
