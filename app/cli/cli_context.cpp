@@ -32,4 +32,10 @@ void writeJson(const nlohmann::json& j, const std::string& path) {
   if (ec) throw InputError("json", "cannot replace '" + path + "': " + ec.message(), "check permissions");
 }
 
+ReadOptions logReadOptions(const std::string& cacheDir) {
+  ReadOptions o;
+  o.slocum_cache_dir = cacheDir;
+  return o;
+}
+
 }  // namespace auv::cli

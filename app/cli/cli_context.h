@@ -5,11 +5,20 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "missionlog/read_options.h"
+
 namespace auv::cli {
 
 std::string vehiclesDir();  // see app/common/resource_paths.h
 
 // Writes pretty JSON to `path` ("-" = stdout). Throws InputError if it cannot.
 void writeJson(const nlohmann::json& j, const std::string& path);
+
+// How the commands that take --log read it: `--cache-dir DIR` is where
+// Slocum binary files whose sensor list is factored out find their cache.
+ReadOptions logReadOptions(const std::string& cacheDir);
+inline constexpr const char* kCacheDirHelp =
+    "Folder of Slocum sensor-list caches (<crc>.cac or .ccc) for binary .dbd/.ebd/.sbd/.tbd/... logs; searched "
+    "before the log's own folder and the per-user cache (~/.cache/auvballast/slocum-cache)";
 
 }  // namespace auv::cli

@@ -21,7 +21,7 @@ namespace auv::cli {
 namespace {
 
 struct AnalyzeOpts {
-  std::string vehicle, log, installed, bg_mm, target_density, coefficient_sigma, json;
+  std::string vehicle, log, cache_dir, installed, bg_mm, target_density, coefficient_sigma, json;
   bool no_classic = false;
 };
 
@@ -56,7 +56,7 @@ int runAnalyze(const AnalyzeOpts& o) {
   a.classic = !o.no_classic;
 
   ReadReport readReport;
-  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.log, ReadOptions{}, readReport);
+  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.log, logReadOptions(o.cache_dir), readReport);
   analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
   if (!readReport.clean()) {
     r.warnings.insert(r.warnings.begin(), "the log had problems on import (" + std::to_string(readReport.totalProblems()) +
@@ -95,6 +95,7 @@ Command addAnalyzeCommand(CLI::App& app) {
   auto o = std::make_shared<AnalyzeOpts>();
   cmd->add_option("--vehicle", o->vehicle, "Vehicle id (see 'auvballast vehicles') or profile .json")->required();
   cmd->add_option("--log", o->log, "Mission log (interchange CSV, docs/formats/mission-log-csv.md)")->required();
+  cmd->add_option("--cache-dir", o->cache_dir, kCacheDirHelp);
   cmd->add_option("--installed", o->installed,
                   "Adjustment mass at each point during the logged mission, kg, profile order (e.g. FS,FP,AS,AP)");
   cmd->add_option("--bg-mm", o->bg_mm,

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli_context.h"
 #include "commands.h"
 #include "common/input_error.h"
 #include "missionlog/interchange_csv.h"
@@ -14,14 +15,15 @@ namespace auv::cli {
 Command addConvertCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("convert", "Read any supported mission log and write it as interchange CSV");
   struct Opts {
-    std::string in, out;
+    std::string in, out, cache_dir;
   };
   auto o = std::make_shared<Opts>();
-  cmd->add_option("--log", o->in, "Input log (interchange CSV, delimited text, Slocum ASCII, glider NetCDF)")->required();
+  cmd->add_option("--log", o->in, "Input log (interchange CSV, delimited text, Slocum ASCII or binary, glider NetCDF)")->required();
+  cmd->add_option("--cache-dir", o->cache_dir, kCacheDirHelp);
   cmd->add_option("--out", o->out, "Output interchange CSV")->required();
   return {cmd, [o]() {
             ReadReport report;
-            const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o->in, ReadOptions{}, report);
+            const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o->in, logReadOptions(o->cache_dir), report);
             writeInterchangeCsv(log, o->out);
             std::cout << "wrote " << o->out << ": " << log.rowCount() << " rows, " << log.channels.size()
                       << " channels (read as " << report.format << ")\n";

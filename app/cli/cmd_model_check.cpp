@@ -28,7 +28,7 @@ namespace auv::cli {
 namespace {
 
 struct ModelCheckOpts {
-  std::string vehicle, log, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth, config, history;
+  std::string vehicle, log, cache_dir, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth, config, history;
   bool accept = false;
 };
 
@@ -71,7 +71,7 @@ int runModelCheck(const ModelCheckOpts& o) {
   }
 
   ReadReport readReport;
-  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.log, ReadOptions{}, readReport);
+  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.log, logReadOptions(o.cache_dir), readReport);
   const analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
   nlohmann::json j = analysis::toJson(r);
   const std::unique_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(log, v, app::resourceDir(), setup);
@@ -128,6 +128,7 @@ Command addModelCheckCommand(CLI::App& app) {
   auto o = std::make_shared<ModelCheckOpts>();
   cmd->add_option("--vehicle", o->vehicle, "Vehicle id (see 'auvballast vehicles') or profile .json")->required();
   cmd->add_option("--log", o->log, "Mission log (interchange CSV, docs/formats/mission-log-csv.md)")->required();
+  cmd->add_option("--cache-dir", o->cache_dir, kCacheDirHelp);
   cmd->add_option("--json", o->json, "Write the JSON report (analysis + missing_physics) here ('-' = stdout instead of text)");
   cmd->add_flag("--accept", o->accept, "Write the accepted terms into a copy of the vehicle profile");
   cmd->add_option("--config", o->config,

@@ -29,7 +29,7 @@ using sim::SimTrace;
 using sim::WaterColumn;
 
 struct SimulateOpts {
-  std::string vehicle, plan, replay, out, installed, ballast_error, env, seed, interval, drive = "auto";
+  std::string vehicle, plan, replay, cache_dir, out, installed, ballast_error, env, seed, interval, drive = "auto";
 };
 
 std::string requireVehicle(const SimulateOpts& o, const std::string& from_input, const std::string& input_name) {
@@ -131,7 +131,7 @@ int runPlan(const SimulateOpts& o) {
 
 int runReplay(const SimulateOpts& o) {
   ReadReport report;
-  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.replay, ReadOptions{}, report);
+  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.replay, logReadOptions(o.cache_dir), report);
   const std::string* logged_vehicle = log.metadataValue("vehicle");
   const VehicleProfile v =
       VehicleCatalog(vehiclesDir()).load(requireVehicle(o, logged_vehicle ? *logged_vehicle : "", "log"));
@@ -184,6 +184,7 @@ Command addSimulateCommand(CLI::App& app) {
                   "Vehicle id (see 'auvballast vehicles') or profile .json; default: the plan's or log's vehicle");
   cmd->add_option("--plan", o->plan, "Mission plan (docs/formats/mission-plan.md)");
   cmd->add_option("--replay", o->replay, "Recorded mission log to re-fly with its own actuators or commands");
+  cmd->add_option("--cache-dir", o->cache_dir, kCacheDirHelp);
   cmd->add_option("--out", o->out, "Where to write the simulated log (interchange CSV)")->required();
   cmd->add_option("--installed", o->installed,
                   "Adjustment mass at each point, kg, profile order (e.g. FS,FP,AS,AP); overrides the plan's");
