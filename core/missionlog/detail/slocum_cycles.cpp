@@ -73,60 +73,79 @@ SlocumCycles decodeSlocumCycles(std::string_view data, std::size_t at, const std
   const auto stateBytes = static_cast<std::size_t>(stateBytesLong);
   std::vector<int> width(n);
   for (std::size_t k = 0; k < n; ++k) width[k] = sensors[k].bytes;
-  out.sensors.resize(n);
-  std::vector<double> held(n, kNaN);
-  std::vector<char> known(n, 0);
 
+  // Pass 1 walks the cycles, checks each is whole and sane, and counts every
+  // sensor's samples, so that pass 2 writes into vectors reserved once (the
+  // output is several times the input: growing vectors cost more than the
+  // decoding).
+  std::vector<std::uint32_t> count(n, 0);
   auto stop = [&](std::size_t where, std::string why) {
     out.damage = std::move(why);
     out.damage_at = where;
   };
+  const unsigned char* end = base + size;
   while (at < size) {
     const unsigned char tag = base[at];
     if (tag == 'X') {
       out.saw_end_tag = true;
       out.ended_cleanly = true;
-      return out;
+      break;
     }
     if (tag != 'd') {
       stop(at, "unknown cycle tag 0x" + std::string(1, "0123456789abcdef"[tag >> 4]) +
                    std::string(1, "0123456789abcdef"[tag & 15]) + " (expected 'd' or 'X'); the rest of the file is not read");
-      return out;
+      break;
     }
-    const std::size_t cycleAt = at;
     if (size - at - 1 < stateBytes) {
-      stop(cycleAt, "the file ends inside the state bytes of a data cycle; that cycle is not read");
-      return out;
+      stop(at, "the file ends inside the state bytes of a data cycle; that cycle is not read");
+      break;
     }
     const unsigned char* state = base + at + 1;
-    const unsigned char* p = state + stateBytes;
-    const unsigned char* end = base + size;
-    const auto cycle = static_cast<std::uint32_t>(out.cycles);
-    double cycleTime = kNaN;
-    // First pass only checks that the cycle is whole and has no 11 states,
-    // so that a damaged cycle adds nothing.
     std::size_t need = 0;
     bool odd = false;
     for (std::size_t b = 0; b < stateBytes; ++b) {
       const unsigned s = state[b];
-      if (!(s & 0xAA)) continue;
+      if (!s) continue;
       for (unsigned k = 0; k < 4; ++k) {
         const unsigned bits = (s >> (6 - 2 * k)) & 3u;
+        if (!bits) continue;
         const std::size_t idx = 4 * b + k;
-        if (bits == 3 || (bits == 2 && idx >= n)) odd = true;
-        else if (bits == 2) need += static_cast<std::size_t>(width[idx]);
+        if (bits == 3 || idx >= n) {
+          odd = true;
+          continue;
+        }
+        ++count[idx];
+        if (bits == 2) need += static_cast<std::size_t>(width[idx]);
       }
     }
-    // Bits past the last sensor in the last state byte must be 00.
-    if (n % 4 && stateBytes * 4 >= n && (state[stateBytes - 1] & ((1u << (2 * (4 - n % 4))) - 1u))) odd = true;
     if (odd) {
-      stop(cycleAt, "a data cycle has state bits 11 or a state for a sensor beyond the list; the rest of the file is not read");
-      return out;
+      // The counts of this cycle are only an over-estimate for the reserve.
+      stop(at, "a data cycle has state bits 11 or a state for a sensor beyond the list; the rest of the file is not read");
+      break;
     }
-    if (static_cast<std::size_t>(end - p) < need) {
-      stop(cycleAt, "the file ends inside a data cycle; that cycle is not read");
-      return out;
+    if (static_cast<std::size_t>(end - (state + stateBytes)) < need) {
+      stop(at, "the file ends inside a data cycle; that cycle is not read");
+      break;
     }
+    out.cycle_offset.push_back(at);
+    at += 1 + stateBytes + need;
+  }
+  if (out.damage.empty()) out.ended_cleanly = true;  // 'X', or the data ended after a whole cycle
+
+  // Pass 2: the values of the whole cycles found above.
+  out.cycles = out.cycle_offset.size();
+  out.sensors.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    out.sensors[k].cycle.reserve(count[k]);
+    out.sensors[k].value.reserve(count[k]);
+  }
+  out.time.resize(out.cycles, kNaN);
+  std::vector<double> held(n, kNaN);
+  std::vector<char> known(n, 0);
+  for (std::size_t c = 0; c < out.cycles; ++c) {
+    const unsigned char* state = base + out.cycle_offset[c] + 1;
+    const unsigned char* p = state + stateBytes;
+    const auto cycle = static_cast<std::uint32_t>(c);
     for (std::size_t b = 0; b < stateBytes; ++b) {
       const unsigned s = state[b];
       if (!s) continue;
@@ -145,15 +164,13 @@ SlocumCycles decodeSlocumCycles(std::string_view data, std::size_t at, const std
         auto& sv = out.sensors[idx];
         sv.cycle.push_back(cycle);
         sv.value.push_back(h);
-        if (static_cast<int>(idx) == timeSensor) cycleTime = h;
       }
     }
-    out.time.push_back(cycleTime);
-    out.cycle_offset.push_back(cycleAt);
-    ++out.cycles;
-    at = static_cast<std::size_t>(p - base);
+    if (timeSensor >= 0) {
+      const auto ts = static_cast<std::size_t>(timeSensor);
+      if (((state[ts / 4] >> (6 - 2 * (ts % 4))) & 3u) != 0 && known[ts]) out.time[c] = held[ts];
+    }
   }
-  out.ended_cleanly = true;  // no 'X', but the data ended after a whole cycle
   return out;
 }
 
