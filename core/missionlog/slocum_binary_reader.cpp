@@ -31,15 +31,19 @@ void reportDamage(const detail::SlocumFile& f, const std::string& name, const Re
                           "the file is truncated or damaged; copy it from the glider again");
 }
 
-// Stored NaN in a new value is not a sample; the report counts them (inf
-// values are counted by tidyTable as beyond the fill-value limit).
-void reportStoredNaN(const TableColumn& col, std::size_t count, const std::string& name, const ReadOptions& o,
-                     ReadReport& r) {
+// inf and nan are decoded as stored but are no samples in the log; gliders
+// write them routinely (m_time_til_wpt is inf while no waypoint is ahead), so
+// each sensor gets one line in the report with the count, not one per value.
+void reportNonFinite(const TableColumn& col, std::size_t inf, std::size_t nan, const std::string& name,
+                     const ReadOptions& o, ReadReport& r) {
+  const std::size_t count = inf + nan;
   if (count == 0) return;
+  std::string what;
+  if (inf) what = std::to_string(inf) + " value(s) stored as inf or -inf";
+  if (inf && nan) what += " and ";
+  if (nan) what += std::to_string(nan) + " value(s) stored as nan";
   detail::reportProblem(r, o, ReadProblemKind::kValueOutOfRange, {name, 0, 0}, col.name,
-                        std::to_string(count) + " new value(s) of " + col.source_name +
-                            " stored as nan; treated as not sampled",
-                        "nothing to do: the glider wrote nan");
+                        what + "; treated as not sampled", "nothing to do: the glider wrote them so");
   r.counts[static_cast<std::size_t>(ReadProblemKind::kValueOutOfRange)] += static_cast<long long>(count) - 1;
   r.cells_blanked += static_cast<long long>(count);
 }
@@ -73,7 +77,7 @@ LogTable buildTable(const detail::SlocumFile& f, const std::string& name, const 
     const auto& sv = cy.sensors[k];
     if (!sv.cycle.empty()) {
       col.values.assign(rows, kNaN);
-      std::size_t storedNaN = 0;
+      std::size_t inf = 0, nan = 0;
       for (std::size_t j = 0; j < sv.cycle.size(); ++j) {
         std::size_t row = sv.cycle[j];
         if (skip) {
@@ -81,11 +85,14 @@ LogTable buildTable(const detail::SlocumFile& f, const std::string& name, const 
           row = row == 0 ? 0 : row - 1;
         }
         double v = sv.value[j];
-        if (std::isnan(v)) ++storedNaN;
-        else if (nmea && std::isfinite(v)) v = detail::slocumNmeaToDegrees(v);
+        if (std::isnan(v)) ++nan;
+        else if (std::isinf(v)) {
+          ++inf;
+          v = kNaN;
+        } else if (nmea) v = detail::slocumNmeaToDegrees(v);
         col.values[row] = v;
       }
-      reportStoredNaN(col, storedNaN, name, o, r);
+      reportNonFinite(col, inf, nan, name, o, r);
     }
     t.columns.push_back(std::move(col));
   }

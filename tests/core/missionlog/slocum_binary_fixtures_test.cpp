@@ -307,6 +307,23 @@ TEST(SlocumBinaryFixtures, FilesWithTheirListFillThePerUserCache) {
   ::unsetenv("XDG_CACHE_HOME");
 }
 
+// A file that continues a mission: its first cycle (every sensor's last
+// value) has the time of the second; one row, the second cycle's values win.
+TEST(SlocumBinaryFixtures, FirstCycleAtTheTimeOfTheSecondIsFoldedIntoIt) {
+  SlocumWriterFile w = engineering(false);
+  w.cycles[1].value[0] = kT0;
+  ReadReport r;
+  const MissionLog log = parseSlocumBinary(test::writeSlocumBinary(w), "/nonexistent/fold.dbd", options(), r);
+  ASSERT_EQ(log.rowCount(), 3u);
+  EXPECT_EQ(r.data_lines, 4);
+  EXPECT_EQ(r.rows_merged, 1);
+  EXPECT_EQ(r.rows_kept, 3);
+  EXPECT_EQ(log.time, (std::vector<double>{0.0, 8.0, 12.5}));
+  EXPECT_EQ(log.channel("depth").values[0], 12.25);  // cycle 1's, not cycle 0's 0.5
+  EXPECT_NEAR(log.channel("battery_position").values[0], 12.7, 1e-12);  // only cycle 0 has it
+  EXPECT_EQ(log.channel("u_test_int8").values[0], 127);
+}
+
 std::string refusal(const std::string& bytes, const std::string& name) {
   try {
     detail::decodeSlocumFile(bytes, name, options());
