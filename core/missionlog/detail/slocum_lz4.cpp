@@ -7,6 +7,10 @@
 namespace auv::detail {
 namespace {
 
+// Slocum files are at most a few MB; an LZ4 stream that claims far more is
+// damage or an attack on memory, not a glider file.
+constexpr std::size_t kMaxDecompressed = std::size_t{256} << 20;
+
 std::size_t blockLength(std::string_view data, std::size_t at) {
   return (static_cast<std::size_t>(static_cast<unsigned char>(data[at])) << 8) |
          static_cast<unsigned char>(data[at + 1]);
@@ -42,6 +46,9 @@ std::string slocumLz4Decompress(std::string_view data, const std::string& file) 
                            std::to_string(data.size() - at - 2) + " remain",
                        "the compressed file is truncated or damaged; copy it from the glider again", {file, 0, 0});
     const std::size_t base = out.size();
+    if (base > kMaxDecompressed)
+      throw InputError("lz4", "the blocks up to byte " + std::to_string(at) + " decompress to more than 256 MiB",
+                       "this is not a compressed Slocum file (they hold a few MB)", {file, 0, 0});
     out.resize(base + kSlocumLz4BlockMax);
     const int got = LZ4_decompress_safe(data.data() + at + 2, out.data() + base, static_cast<int>(n),
                                         static_cast<int>(kSlocumLz4BlockMax));
