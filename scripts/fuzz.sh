@@ -17,9 +17,9 @@ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DAUV_BUILD_FUZZERS=ON \
   -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" \
   >/dev/null
-TARGETS=(fuzz_interchange_csv fuzz_delimited_text fuzz_slocum_ascii fuzz_glider_netcdf fuzz_seaexplorer_raw)
+TARGETS=(fuzz_interchange_csv fuzz_delimited_text fuzz_slocum_ascii fuzz_slocum_binary fuzz_glider_netcdf fuzz_seaexplorer_raw)
 CORPORA=(tests/data/missionlog/corpus tests/data/missionlog/corpus-delimited tests/data/missionlog/corpus-slocum
-         tests/data/missionlog/corpus-netcdf tests/data/missionlog/corpus-seaexplorer)
+         tests/data/missionlog/corpus-slocum-binary tests/data/missionlog/corpus-netcdf tests/data/missionlog/corpus-seaexplorer)
 cmake --build build-fuzz --target "${TARGETS[@]}" -j"$(nproc)"
 mkdir -p build-fuzz/artifacts
 for i in "${!TARGETS[@]}"; do

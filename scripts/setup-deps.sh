@@ -4,7 +4,7 @@ set -euo pipefail
 PKGS=(build-essential cmake ninja-build file pkg-config git
       qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-svg-dev libqt6sql6-sqlite
       qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
-      libeigen3-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev libnetcdf-dev zlib1g-dev
+      libeigen3-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev libnetcdf-dev zlib1g-dev liblz4-dev
       libgtest-dev libgmock-dev libbenchmark-dev
       libgl1-mesa-dev libxkbcommon-dev fonts-dejavu-core
       clang libclang-rt-14-dev)

@@ -24,8 +24,8 @@ std::vector<fs::path> logPaths(const std::vector<std::string>& logs) {
 }
 }  // namespace
 
-MissionLog readLogArgument(const std::vector<std::string>& logs, ReadReport& report) {
-  return readMission(logPaths(logs), ReadOptions{}, report);
+MissionLog readLogArgument(const std::vector<std::string>& logs, const ReadOptions& options, ReadReport& report) {
+  return readMission(logPaths(logs), options, report);
 }
 
 std::string logArgumentLabel(const std::vector<std::string>& logs) { return missionLabel(logPaths(logs)); }
@@ -47,6 +47,12 @@ void writeJson(const nlohmann::json& j, const std::string& path) {
   std::error_code ec;
   fs::rename(tmp, path, ec);
   if (ec) throw InputError("json", "cannot replace '" + path + "': " + ec.message(), "check permissions");
+}
+
+ReadOptions logReadOptions(const std::string& cacheDir) {
+  ReadOptions o;
+  o.slocum_cache_dir = cacheDir;
+  return o;
 }
 
 }  // namespace auv::cli

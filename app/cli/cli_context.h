@@ -9,6 +9,8 @@
 #include "missionlog/mission_log.h"
 #include "missionlog/read_report.h"
 
+#include "missionlog/read_options.h"
+
 namespace auv::cli {
 
 std::string vehiclesDir();  // see app/common/resource_paths.h
@@ -16,10 +18,17 @@ std::string vehiclesDir();  // see app/common/resource_paths.h
 // Writes pretty JSON to `path` ("-" = stdout). Throws InputError if it cannot.
 void writeJson(const nlohmann::json& j, const std::string& path);
 
+// How the commands that take --log read it: `--cache-dir DIR` is where
+// Slocum binary files whose sensor list is factored out find their cache.
+ReadOptions logReadOptions(const std::string& cacheDir);
+inline constexpr const char* kCacheDirHelp =
+    "Folder of Slocum sensor-list caches (<crc>.cac or .ccc) for binary .dbd/.ebd/.sbd/.tbd/... logs; searched "
+    "before the log's own folder and the per-user cache (~/.cache/auvballast/slocum-cache)";
+
 // `--log` as given: files and folders, the flag repeatable (`--log DIR`,
 // `--log a.dbd --log a.ebd`), read as one mission by core readMission
 // (missionlog/mission_files.h).
-MissionLog readLogArgument(const std::vector<std::string>& logs, ReadReport& report);
+MissionLog readLogArgument(const std::vector<std::string>& logs, const ReadOptions& options, ReadReport& report);
 // The name of the log(s) in reports: "p1710100.nc", "raw", "a.dbd and 1 more".
 std::string logArgumentLabel(const std::vector<std::string>& logs);
 

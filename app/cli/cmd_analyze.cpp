@@ -22,7 +22,7 @@ namespace {
 
 struct AnalyzeOpts {
   std::vector<std::string> log;
-  std::string vehicle, installed, bg_mm, target_density, coefficient_sigma, json;
+  std::string cache_dir, vehicle, installed, bg_mm, target_density, coefficient_sigma, json;
   bool no_classic = false;
 };
 
@@ -57,7 +57,7 @@ int runAnalyze(const AnalyzeOpts& o) {
   a.classic = !o.no_classic;
 
   ReadReport readReport;
-  const MissionLog log = readLogArgument(o.log, readReport);
+  const MissionLog log = readLogArgument(o.log, logReadOptions(o.cache_dir), readReport);
   analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
   if (!readReport.clean()) {
     r.warnings.insert(r.warnings.begin(), "the log had problems on import (" + std::to_string(readReport.totalProblems()) +
@@ -99,6 +99,7 @@ Command addAnalyzeCommand(CLI::App& app) {
                   "Mission log: a file (interchange CSV or a vehicle's own format) or a folder of a mission's files; "
                   "repeat for several files")
       ->required();
+  cmd->add_option("--cache-dir", o->cache_dir, kCacheDirHelp);
   cmd->add_option("--installed", o->installed,
                   "Adjustment mass at each point during the logged mission, kg, profile order (e.g. FS,FP,AS,AP)");
   cmd->add_option("--bg-mm", o->bg_mm,

@@ -29,7 +29,7 @@ namespace {
 
 struct ModelCheckOpts {
   std::vector<std::string> log;
-  std::string vehicle, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth, config, history;
+  std::string cache_dir, vehicle, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth, config, history;
   bool accept = false;
 };
 
@@ -72,7 +72,7 @@ int runModelCheck(const ModelCheckOpts& o) {
   }
 
   ReadReport readReport;
-  const MissionLog log = readLogArgument(o.log, readReport);
+  const MissionLog log = readLogArgument(o.log, logReadOptions(o.cache_dir), readReport);
   const analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
   nlohmann::json j = analysis::toJson(r);
   const std::unique_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(log, v, app::resourceDir(), setup);
@@ -132,6 +132,7 @@ Command addModelCheckCommand(CLI::App& app) {
                   "Mission log: a file (interchange CSV or a vehicle's own format) or a folder of a mission's files; "
                   "repeat for several files")
       ->required();
+  cmd->add_option("--cache-dir", o->cache_dir, kCacheDirHelp);
   cmd->add_option("--json", o->json, "Write the JSON report (analysis + missing_physics) here ('-' = stdout instead of text)");
   cmd->add_flag("--accept", o->accept, "Write the accepted terms into a copy of the vehicle profile");
   cmd->add_option("--config", o->config,

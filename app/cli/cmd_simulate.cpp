@@ -30,7 +30,7 @@ using sim::WaterColumn;
 
 struct SimulateOpts {
   std::vector<std::string> replay;
-  std::string vehicle, plan, out, installed, ballast_error, env, seed, interval, drive = "auto";
+  std::string cache_dir, vehicle, plan, out, installed, ballast_error, env, seed, interval, drive = "auto";
 };
 
 std::string requireVehicle(const SimulateOpts& o, const std::string& from_input, const std::string& input_name) {
@@ -132,7 +132,7 @@ int runPlan(const SimulateOpts& o) {
 
 int runReplay(const SimulateOpts& o) {
   ReadReport report;
-  const MissionLog log = readLogArgument(o.replay, report);
+  const MissionLog log = readLogArgument(o.replay, logReadOptions(o.cache_dir), report);
   const std::string replayName = o.replay.size() == 1 ? o.replay.front() : logArgumentLabel(o.replay);
   const std::string* logged_vehicle = log.metadataValue("vehicle");
   const VehicleProfile v =
@@ -188,6 +188,7 @@ Command addSimulateCommand(CLI::App& app) {
   cmd->add_option("--replay", o->replay,
                   "Recorded mission log (file, or folder of a mission's files; repeatable) to re-fly with its own "
                   "actuators or commands");
+  cmd->add_option("--cache-dir", o->cache_dir, kCacheDirHelp);
   cmd->add_option("--out", o->out, "Where to write the simulated log (interchange CSV)")->required();
   cmd->add_option("--installed", o->installed,
                   "Adjustment mass at each point, kg, profile order (e.g. FS,FP,AS,AP); overrides the plan's");

@@ -10,6 +10,7 @@
 #include "missionlog/netcdf_reader.h"
 #include "missionlog/seaexplorer_raw_reader.h"
 #include "missionlog/slocum_ascii_reader.h"
+#include "missionlog/slocum_binary_reader.h"
 
 namespace auv {
 
@@ -20,6 +21,8 @@ LogReaderRegistry LogReaderRegistry::withBuiltinReaders() {
   // then the generic text reader, which would accept an interchange file too.
   r.add(std::make_unique<GliderNetcdfReader>());
   r.add(std::make_unique<SeaExplorerRawReader>());
+  // Before the dbd2asc text reader: both files start with `dbd_label:`.
+  r.add(std::make_unique<SlocumBinaryReader>());
   r.add(std::make_unique<SlocumAsciiReader>());
   r.add(std::make_unique<InterchangeCsvReader>());
   r.add(std::make_unique<DelimitedTextReader>());

@@ -1,6 +1,7 @@
 #pragma once
 // How a log reader is asked to read, and how a reader says it was cancelled.
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,13 @@ struct ReadOptions {
   // Read block size; also the longest line a reader accepts (longer lines are
   // skipped and reported). Tests and the fuzzer use small blocks.
   std::size_t block_bytes = std::size_t{4} << 20;
+  // Slocum binary files whose sensor list is factored out name a cache file
+  // by CRC; it is looked up here first (CLI `--cache-dir`), then next to the
+  // file, then in the per-user cache ($XDG_CACHE_HOME/auvballast/slocum-cache).
+  std::filesystem::path slocum_cache_dir;
+  // Look up and fill the per-user cache (off in the fuzzer, which must not
+  // write caches named by random CRCs into the home folder).
+  bool slocum_user_cache = true;
 };
 
 // Thrown when ReadOptions::progress returns false. Not an InputError: the

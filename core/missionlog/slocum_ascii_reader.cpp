@@ -12,6 +12,7 @@
 #include "missionlog/detail/ascii_text.h"
 #include "missionlog/detail/line_cells.h"
 #include "missionlog/detail/report_problem.h"
+#include "missionlog/detail/slocum_channels.h"
 #include "missionlog/log_table.h"
 #include "missionlog/text_cells.h"
 #include "missionlog/text_lines.h"
@@ -22,8 +23,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kMaxSensors = 20000;
-// Slocum writes this for a latitude/longitude without a fix.
-constexpr double kNoFix = 69696969.0;
 
 using detail::splitBlanks;
 using detail::trim;
@@ -39,14 +38,6 @@ bool tagLine(std::string_view line, std::string& key, std::string& value) {
   key = std::string(k);
   value = std::string(trim(line.substr(colon + 1)));
   return true;
-}
-
-// NMEA-style ddmm.mmmm (Slocum units "lat"/"lon") -> decimal degrees.
-double nmeaToDegrees(double v) {
-  if (std::fabs(v) == kNoFix) return kNaN;
-  const double a = std::fabs(v);
-  const double deg = std::floor(a / 100.0);
-  return std::copysign(deg + (a - 100.0 * deg) / 60.0, v);
 }
 
 enum class Stream { kEngineering, kScience };
@@ -194,27 +185,13 @@ void SlocumParser::plan() {
   std::map<std::string, std::size_t> used;
   for (std::size_t k = 0; k < sensors_.size(); ++k) {
     const std::string& s = sensors_[k];
-    if (s == "m_present_time") { engTime_ = k; continue; }
-    if (s == "sci_m_present_time") { sciTime_ = k; continue; }
+    if (detail::isSlocumEngineeringTime(s)) { engTime_ = k; continue; }
+    if (detail::isSlocumScienceTime(s)) { sciTime_ = k; continue; }
     if (s == "m_present_secs_into_mission") engSecs_ = k;
     if (s == "sci_m_present_secs_into_mission") sciSecs_ = k;
-    TableColumn c;
-    c.source_name = s;
-    c.where = {file_, labelLineNo_, 0};
-    c.source_unit = units_[k];
-    std::string unit = units_[k];
-    const auto alias = findChannelAlias(normaliseChannelKey(s));
-    if (alias && alias->channel != "time" && alias->channel != "date") {
-      c.name = std::string(alias->channel);
-      if (unit.empty()) unit = std::string(alias->unit);
-    } else {
-      c.name = safeChannelName(s);
-    }
-    if (unit == "lat" || unit == "lon") {
-      nmea_[k] = 1;
-      unit = "deg";
-    }
-    c.unit = normaliseUnitSpelling(unit);
+    bool nmea = false;
+    TableColumn c = detail::slocumColumn(s, units_[k], {file_, labelLineNo_, 0}, nmea);
+    nmea_[k] = nmea ? 1 : 0;
     target_[k] = static_cast<int>(columns_.size());
     columns_.push_back(std::move(c));
   }
@@ -274,7 +251,7 @@ void SlocumParser::dataLine(std::string_view text, LineFlag flag) {
              "dbd2asc writes numbers or NaN; the file is damaged here");
         return;
     }
-    if (nmea_[k] && !std::isnan(v) && std::isfinite(v)) v = nmeaToDegrees(v);
+    if (nmea_[k] && !std::isnan(v) && std::isfinite(v)) v = detail::slocumNmeaToDegrees(v);
     row_[k] = v;
   }
   // Which clock times this row: the glider computer's, else the science bay's.
@@ -334,58 +311,10 @@ MissionLog SlocumParser::finish() {
     throw InputError("rows", why, "the file needs at least one row with m_present_time or sci_m_present_time",
                      {file_, line_, 0});
   }
-  // Two sensors for one channel (m_de_oil_vol and m_ballast_pumped on a
-  // glider that has only one engine): the one with more samples wins, the
-  // other keeps its own name.
-  std::map<std::string, std::vector<std::size_t>> byName;
-  for (std::size_t c = 0; c < columns_.size(); ++c) byName[columns_[c].name].push_back(c);
-  for (auto& [name, idx] : byName) {
-    if (idx.size() < 2) continue;
-    auto samples = [&](std::size_t c) {
-      std::size_t n = 0;
-      for (const LogTable* t : {&eng_, &sci_})
-        for (double v : t->columns[c].values) n += !std::isnan(v);
-      return n;
-    };
-    std::size_t best = idx[0];
-    for (std::size_t c : idx)
-      if (samples(c) > samples(best)) best = c;
-    for (std::size_t c : idx)
-      if (c != best)
-        for (LogTable* t : {&eng_, &sci_}) {
-          t->columns[c].name = safeChannelName(columns_[c].source_name);
-          t->columns[c].unit = normaliseUnitSpelling(columns_[c].source_unit);
-        }
-  }
-  std::vector<LogTable> tables;
-  for (LogTable* t : {&eng_, &sci_})
-    if (!t->time.empty()) {
-      tidyTable(*t, opt_, rep_);
-      tables.push_back(std::move(*t));
-    }
-  LogTable merged = mergeTables(std::move(tables), MergeNames::kCombine, opt_, rep_);
-  merged.metadata = tags_;
-  for (const auto& t : tags_)
-    if (t.key == "filename") {
-      // "comet-2016-174-05-000" -> glider "comet"
-      const std::string& f = t.value;
-      std::size_t cut = f.size();
-      for (std::size_t i = 0; i + 5 < f.size(); ++i)
-        if (f[i] == '-' && std::isdigit(static_cast<unsigned char>(f[i + 1])) &&
-            std::isdigit(static_cast<unsigned char>(f[i + 4])) && f[i + 5] == '-') {
-          cut = i;
-          break;
-        }
-      merged.metadata.push_back({"glider", f.substr(0, cut)});
-    }
-  std::size_t empty = 0;
-  for (const auto& c : merged.columns) {
-    std::size_t valid = 0;
-    for (double v : c.values) valid += !std::isnan(v);
-    empty += valid == 0;
-  }
-  if (empty) merged.metadata.push_back({"sensors_never_sampled", std::to_string(empty) + " (not imported)"});
-  return finishTable(std::move(merged), rep_, true);
+  std::vector<LogTable> streams;
+  streams.push_back(std::move(eng_));
+  streams.push_back(std::move(sci_));
+  return detail::finishSlocumLog(std::move(streams), tags_, opt_, rep_);
 }
 
 template <class Pull>
