@@ -20,6 +20,10 @@
 #include "analysis/mission_analysis.h"
 #include "discrepancy/glider_ballast_answer.h"
 #include "discrepancy/model_check.h"
+#include "discrepancy/model_check_report.h"
+#include "analysis/analysis_report.h"
+#include "planning/glider_ballast_plan.h"
+#include "common/input_error.h"
 #include "discrepancy/synthetic_glider.h"
 #include "discrepancy/vehicle_check.h"
 #include "missionlog/log_reader.h"
@@ -165,6 +169,118 @@ void synthetic(const VehicleProfile& v) {
   std::printf("  mass to add, analysis alone   mean |error| %.1f g, worst %.1f g\n", sumA / n, worstA);
 }
 
+struct RealResult {
+  double Cd0 = NAN, V0 = NAN, nb = NAN, add_analysis = NAN, add_joint = NAN, add_sigma = NAN, rms_start = NAN, rms = NAN;
+  std::size_t samples = 0;
+  std::string found, target;
+  nlohmann::json plan;
+};
+
+RealResult runReal(const std::string& file, const VehicleProfile& v) {
+  RealResult out;
+  ReadReport rr;
+  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(file, ReadOptions{}, rr);
+  analysis::AnalysisOptions ao;
+  ao.classic = false;
+  const analysis::AnalysisReport ar = analysis::analyzeMission(log, v, ao);
+  const nlohmann::json j = analysis::toJson(ar);
+  if (!ar.net_buoyancy_kg.known) {
+    std::printf("  analysis: %s\n", ar.net_buoyancy_kg.why_not.c_str());
+    return out;
+  }
+  const auto& d = ar.details["glider_fit"];
+  out.Cd0 = d["Cd0"].get<double>();
+  out.V0 = d["hull_volume_m3"].get<double>();
+  out.nb = ar.net_buoyancy_kg.value;
+  out.rms_start = d["rms_start_mps"].get<double>();
+  out.rms = d["rms_mps"].get<double>();
+  out.samples = d["samples"].get<std::size_t>();
+  out.add_analysis = ar.mass_to_add_g.value;
+  out.target = auv::analysis::toJson(ar)["target"].dump();
+  const analysis::GliderTarget target{ar.target_density_kgm3, ar.target_pressure_dbar, ar.target_temperature_degC, NAN, ar.target_basis};
+  try {
+    const auto model = makeCheckModel(log, v, AUV_RESOURCE_DIR);
+    const ModelCheckResult r = runModelCheck(*model);
+    for (const auto& mp : r.missing_physics)
+      out.found += (out.found.empty() ? "" : ", ") + mp.id + " " + std::to_string(mp.value) + " " + mp.unit;
+    const GliderBallastAnswer a = gliderBallastAnswer(dynamic_cast<const GliderCheckModel&>(*model), r, target);
+    out.add_joint = a.mass_to_add_g;
+    out.add_sigma = a.mass_to_add_sigma_g;
+    nlohmann::json mj = j;
+    mergeIntoAnalysisJson(mj, r);
+    mergeGliderAnswer(mj, a);
+    out.plan = planGliderBallast(v, {mj, {}, std::nullopt});
+  } catch (const InputError& e) {
+    out.found = std::string("model check not run: ") + e.what();
+  }
+  return out;
+}
+
+VehicleProfile variant(const VehicleProfile& base, double mass_kg, double kappa_per_dbar, double alpha_per_degC,
+                       const nlohmann::json& flight) {
+  VehicleProfile v = base;
+  v.mass_kg = mass_kg;
+  v.hull.compressibility_per_dbar = kappa_per_dbar;
+  v.hull.thermal_expansion_per_degC = alpha_per_degC;
+  v.sections["flight_model"] = flight;
+  return v;
+}
+
+void real(const VehicleProfile& slocum, const VehicleProfile& seaglider) {
+  const std::string dir = std::string(AUV_SHARED_DIR) + "/data/real/";
+  if (!std::filesystem::exists(dir)) {
+    std::printf("(b) real recordings: %s absent, skipped\n", dir.c_str());
+    return;
+  }
+  std::puts("\n(b) real recordings, side by side with the published / shipped flight-model numbers");
+  std::puts("    (ours: steady-glide fit of net buoyancy and the drag parameter, profile mass and volume terms as stated)");
+  auto show = [](const RealResult& r) {
+    std::printf("  ours: samples %zu, drag %.4f, V0 %.6f m3, rms %.2f -> %.2f cm/s, nb %+.3f kg, add at target %+.0f g "
+                "(model check %+.0f +- %.0f g)\n  target %s\n  model check found: %s\n",
+                r.samples, r.Cd0, r.V0, 100 * r.rms_start, 100 * r.rms, r.nb, r.add_analysis, r.add_joint, r.add_sigma,
+                r.target.c_str(), r.found.empty() ? "nothing" : r.found.c_str());
+    if (!r.plan.is_null()) std::printf("%s", gliderPlanText(r.plan).c_str());
+  };
+  {
+    std::puts("comet (Slocum shallow, Baltic): gliderflight steady state with tilt correction x0.86 - 0.004 rad,");
+    std::puts("  reference: Cd0 0.1496, mg 70.103 kg at Vg 0.069721 m3 (1005.47 kg/m3), eps 5e-10 1/Pa, no thermal term");
+    const VehicleProfile v = variant(slocum, 70.103, 5e-6, 0.0,
+                                     {{"pitch_scale", 0.86}, {"pitch_offset_deg", -0.004 * 180 / M_PI}, {"compressibility_per_dbar", 5e-6}});
+    const RealResult r = runReal(dir + "slocum-comet-baltic-2016/comet-2016-174-05.csv", v);
+    show(r);
+    std::printf("  side by side: Cd0 %.4f vs 0.1496; V0 %.6f vs 0.069721 m3 (mass at Vg: %.3f vs 70.103 kg; neutral density "
+                "%.2f vs 1005.47 kg/m3)\n",
+                r.Cd0, r.V0, 70.103 * 0.069721 / r.V0, 70.103 / r.V0);
+  }
+  {
+    std::puts("ammonite (Slocum deep, Ligurian): gliderflight steady state, mg = 60 kg assumed,");
+    std::puts("  reference: Cd0 0.0952, Vg 0.058364 m3 (1028.0 kg/m3), eps 6.26e-10 1/Pa");
+    const VehicleProfile v = variant(slocum, 60.0, 6.26e-6, 0.0, {{"compressibility_per_dbar", 6.26e-6}});
+    const RealResult r = runReal(dir + "slocum-ammonite-ligurian-2008/ammonite-2008-028-01-000.csv", v);
+    show(r);
+    std::printf("  side by side: Cd0 %.4f vs 0.0952; V0 %.6f vs 0.058364 m3 (neutral density %.2f vs 1028.0 kg/m3)\n", r.Cd0, r.V0,
+                60.0 / r.V0);
+  }
+  {
+    std::puts("SG171 (Seaglider, Bay of Bengal, 10 dives to 505 m): bundled seaglider profile (sg_cal_* of dive 100),");
+    std::puts("  reference per dive (flight-constants-per-dive.csv): V0 = volmax + (C_VBD - VBD_MIN) VBD_CNV - vbdbias = "
+              "55266.0 .. 55309.5 cm3 (vbdbias 47.8 .. 4.3), hd_b 0.0224, abs_compress 8.6e-7 .. 1.3e-6");
+    const RealResult r = runReal(dir + "seaglider-sg171-bay-of-bengal-2024/sg171-dives100-109.csv", seaglider);
+    show(r);
+    std::printf("  side by side: hd_b %.4f vs 0.0224; V0 %.1f cm3 vs 55266.0 .. 55309.5 cm3 (vbdbias equivalent %.1f cm3)\n",
+                r.Cd0, r.V0 * 1e6, 55313.8 - r.V0 * 1e6);
+  }
+  {
+    std::puts("SeaExplorer SEA046 (Calvert line, 5 yos to 136 m): no published flight constants; slocum form, mass 59 kg ASSUMED");
+    const VehicleProfile v = variant(slocum, 59.0, 5e-6, 7e-5, nlohmann::json::object());
+    VehicleProfile se = v;
+    se.sections.erase("slocum");
+    se.sections["seaexplorer"] = nlohmann::json::object();
+    const RealResult r = runReal(dir + "seaexplorer-sea046-calvert-2020/sea046-m45-yos10-14.csv", se);
+    show(r);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -178,5 +294,6 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (!onlyReal) synthetic(slocum);
+  real(slocum, loadVehicleProfile(res + "/vehicles/seaglider.json"));
   return 0;
 }

@@ -114,18 +114,27 @@ GliderTarget resolveGliderTarget(const MissionLog& log, const GliderTargetReques
                                              fmt("%.1f", zmax) + " m)",
                          "give a depth the log reached, or --target-density/--target-pressure/--target-temperature");
       w.z = zt;
+      if (!std::isfinite(w.S)) {
+        // Salinity blanked there by QC: take it from a wider band.
+        w.S = meanWater(log, depth, [&](double, double z) { return std::abs(z - zt) <= 25.0; }).S;
+      }
       base = "the log's own CTD at " + fmt("%.1f", zt) + " m (" + std::to_string(w.n) + " samples within 2.5 m)";
     } else {
-      // The bottom of the deepest yo: samples within 5 m of the deepest
-      // point and 20 min of its time.
-      std::size_t k = 0;
-      for (std::size_t i = 0; i < depth.size(); ++i)
-        if (std::isfinite(depth.v[i]) && depth.v[i] > depth.v[k]) k = i;
-      const double zmax = depth.v[k], tmax = depth.t[k];
+      // The bottom of the deepest yo: CTD samples within 5 m of the deepest
+      // one and 20 min of its time (the CTD may pause at the apogee).
+      double zmax = -1.0, tmax = 0.0;
+      meanWater(log, depth, [&](double t, double z) {
+        if (z > zmax) {
+          zmax = z;
+          tmax = t;
+        }
+        return false;
+      });
       w = meanWater(log, depth, [&](double t, double z) { return z >= zmax - 5.0 && std::abs(t - tmax) <= 1200.0; });
       if (w.n == 0)
-        throw InputError("target", "the log has no CTD temperature near its deepest point (" + fmt("%.1f", zmax) + " m)",
+        throw InputError("target", "the log has no CTD temperature with a depth to place it",
                          "give --target-density, --target-pressure and --target-temperature");
+      if (!std::isfinite(w.S)) w.S = meanWater(log, depth, [&](double, double z) { return z >= zmax - 25.0; }).S;
       base = "the log's own water at the bottom of its deepest yo (" + fmt("%.1f", w.z) + " m, " + std::to_string(w.n) +
              " CTD samples within 5 m of " + fmt("%.1f", zmax) + " m)";
     }

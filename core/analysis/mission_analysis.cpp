@@ -481,11 +481,11 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
       GliderTarget target;
       try {
         target = resolveGliderTarget(log, tq, latitude);
-      } catch (const InputError&) {
+      } catch (const InputError& e) {
         if (tq.any()) throw;
-        // No CTD near the bottom: the fit's own reference state.
+        // The log cannot place its own deepest water: the fit's reference state.
         target = {ref.density_kgm3, ref.pressure_dbar, ref.temperature_degC, kNaN,
-                  "the log's mean operating water (no CTD near its deepest point)"};
+                  "the log's mean operating water (" + e.problem() + ")"};
       }
       rep.target_density_kgm3 = target.density_kgm3;
       rep.target_pressure_dbar = target.pressure_dbar;
