@@ -104,7 +104,7 @@ TEST(GliderCli, SeagliderProfileFromItsOwnFileAndAVbdAnswer) {
   const auto& s = rep["recommendation"]["seaglider"];
   ASSERT_TRUE(s.is_object()) << rep["recommendation"].dump();
   // C_VBD moves by the volume the mass to add displaces at the target, 0.2453 cm3 per count.
-  const double dV = -rep["mass_to_add_g"].get<double>() / rep["target"]["density_kgm3"].get<double>();
+  const double dV = -1000.0 * rep["mass_to_add_g"].get<double>() / rep["target"]["density_kgm3"].get<double>();  // cm3
   EXPECT_NEAR(s["C_VBD_new"].get<double>(), std::round(2680 + dV / -0.2453), 1.0);
   std::remove(out.c_str());
 }
