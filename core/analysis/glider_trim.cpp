@@ -30,7 +30,9 @@ GliderTrim estimateGliderTrim(const MissionLog& log, const std::vector<Segment>&
   } else {
     const TimeSeries p = log.series("pitch");
     const TimeSeries pump = log.series("pump_volume"), batt = log.series("battery_position");
-    SeriesCursor cPump(pump, false, 120.0), cBatt(batt, true, 1e9);
+    // Banked turns (a Seaglider turns at 50-60 deg of roll) pitch differently: 2-D samples only.
+    const TimeSeries roll = has(log, "roll") ? log.series("roll") : TimeSeries{};
+    SeriesCursor cPump(pump, false, 120.0), cBatt(batt, true, 1e9), cRoll(roll, false, 120.0);
     Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
     Eigen::Vector3d b = Eigen::Vector3d::Zero();
     std::vector<Eigen::Vector4d> rows;
@@ -43,6 +45,7 @@ GliderTrim estimateGliderTrim(const MissionLog& log, const std::vector<Segment>&
       if (p.t[i] < glides[w].start_s) continue;
       const double q = cPump.at(p.t[i]), x = cBatt.at(p.t[i]);
       if (!std::isfinite(q) || !std::isfinite(x) || !std::isfinite(p.v[i]) || std::abs(p.v[i]) > 60.0) continue;
+      if (!roll.empty() && std::abs(cRoll.at(p.t[i])) > 15.0) continue;
       const Eigen::Vector3d r(q, x, 1.0);
       const double y = std::tan(units::degToRad(p.v[i]));
       A += r * r.transpose();

@@ -184,7 +184,6 @@ void seagliderPlan(const VehicleProfile& v, const GliderPlanInput& in, double ad
   }
   out["points"] = nlohmann::json::array();
   if (lead_g != 0.0) out["points"].push_back({{"name", "lead"}, {"label", "Lead ballast"}, {"add_g", lead_g}});
-  (void)in;
 }
 
 }  // namespace
