@@ -14,7 +14,9 @@
 #include "common/units.h"
 #include "missionlog/log_reader.h"
 #include "number_list.h"
+#include "planning/glider_ballast_plan.h"
 #include "planning/recommend_from_analysis.h"
+#include "target_flags.h"
 #include "vehicle/vehicle_catalog.h"
 
 namespace auv::cli {
@@ -22,7 +24,8 @@ namespace {
 
 struct AnalyzeOpts {
   std::vector<std::string> log;
-  std::string cache_dir, vehicle, installed, bg_mm, target_density, coefficient_sigma, json;
+  std::string cache_dir, vehicle, installed, bg_mm, coefficient_sigma, json;
+  TargetFlags target;
   bool no_classic = false;
 };
 
@@ -41,12 +44,7 @@ int runAnalyze(const AnalyzeOpts& o) {
     if (!(bg > 0.0)) throw InputError("bg-mm", "must be positive (CG below CB)", "give the measured distance in mm, e.g. --bg-mm 20");
     a.bg_m = units::mmToM(bg);
   }
-  if (!o.target_density.empty()) {
-    const double rho = parseNumber(o.target_density, "target-density", "the target water density in kg/m3");
-    if (!(rho > 900.0 && rho < 1100.0))
-      throw InputError("target-density", "must be a seawater density (900..1100 kg/m3)", "e.g. --target-density 1026.5");
-    a.target_density_kgm3 = rho;
-  }
+  a.glider_target = o.target.request();
   if (!o.coefficient_sigma.empty()) {
     const double r = parseNumber(o.coefficient_sigma, "coefficient-sigma",
                                  "the 1-sigma relative uncertainty of the profile's hydrodynamic derivatives");
@@ -76,7 +74,9 @@ int runAnalyze(const AnalyzeOpts& o) {
   if (o.json != "-") {
     if (!readReport.clean()) std::cout << readReport.summary() << "\n";
     std::cout << analysis::toText(r);
-    if (report["recommendation"].is_null()) {
+    if (v.kind == "glider" && !report["recommendation"].is_null()) {
+      std::cout << gliderPlanText(report["recommendation"]);
+    } else if (report["recommendation"].is_null()) {
       std::cout << "No weight change recommended: " << why_not << "\n";
     } else {
       std::cout << "Recommended change for the next mission in the same water (see 'auvballast plan' for others):\n";
@@ -104,8 +104,7 @@ Command addAnalyzeCommand(CLI::App& app) {
                   "Adjustment mass at each point during the logged mission, kg, profile order (e.g. FS,FP,AS,AP)");
   cmd->add_option("--bg-mm", o->bg_mm,
                   "CG below CB from an inclining/roll test, mm: turns the static roll into a CG y offset");
-  cmd->add_option("--target-density", o->target_density,
-                  "Gliders: water density for the ballast-to-add figure, kg/m3 (default: the log's mean below 10 m)");
+  o->target.add(cmd);
   cmd->add_option("--coefficient-sigma", o->coefficient_sigma,
                   "AUVs: 1-sigma relative uncertainty of the profile's hydrodynamic derivatives (default 0.10; "
                   "0.02 once calibrated, e.g. by tow tank or model check); it dominates the net-buoyancy sigma");

@@ -3,7 +3,10 @@
 // the model disagree, which physics the model lacks, fitted and proven on
 // held-out simulation error; --accept writes the accepted terms into a copy
 // of the vehicle profile. This file only maps flags; every number comes from core.
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <iostream>
 #include <memory>
 
@@ -13,6 +16,7 @@
 #include "commands.h"
 #include "common/input_error.h"
 #include "common/units.h"
+#include "discrepancy/glider_ballast_answer.h"
 #include "discrepancy/model_check_report.h"
 #include "discrepancy/profile_update.h"
 #include "discrepancy/vehicle_check.h"
@@ -20,7 +24,9 @@
 #include "history/timestamp.h"
 #include "missionlog/log_reader.h"
 #include "number_list.h"
+#include "planning/glider_ballast_plan.h"
 #include "resource_paths.h"
+#include "target_flags.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/vehicle_catalog.h"
 
@@ -31,6 +37,7 @@ struct ModelCheckOpts {
   std::vector<std::string> log;
   std::string cache_dir, vehicle, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth, config, history;
   bool accept = false;
+  TargetFlags target;
 };
 
 int runModelCheck(const ModelCheckOpts& o) {
@@ -41,6 +48,7 @@ int runModelCheck(const ModelCheckOpts& o) {
 
   analysis::AnalysisOptions a;
   a.log_name = logName;
+  a.glider_target = o.target.request();
   discrepancy::CheckSetup setup;
   if (!o.installed.empty()) {
     a.installed_kg = parseNumberList(o.installed, v.points.size(), "installed",
@@ -79,6 +87,21 @@ int runModelCheck(const ModelCheckOpts& o) {
   const discrepancy::ModelCheckResult mc = discrepancy::runModelCheck(*model, mo);
   discrepancy::mergeIntoAnalysisJson(j, mc);
   if (!readReport.clean()) j["model_check"]["import"] = readReport.summary();
+  const auto* glider = dynamic_cast<const discrepancy::GliderCheckModel*>(model.get());
+  if (glider && std::isfinite(r.target_density_kgm3)) {
+    // The answer with the vehicle as the check found it, in the same target
+    // water the analysis resolved.
+    const analysis::GliderTarget target{r.target_density_kgm3, r.target_pressure_dbar, r.target_temperature_degC,
+                                        std::numeric_limits<double>::quiet_NaN(), r.target_basis};
+    discrepancy::mergeGliderAnswer(j, discrepancy::gliderBallastAnswer(*glider, mc, target));
+    std::string why_not;
+    try {
+      j["recommendation"] = planGliderBallast(v, {j, a.installed_kg, std::nullopt});
+    } catch (const InputError& e) {
+      j["recommendation"] = nullptr;
+      j["recommendation_unavailable"] = e.what();
+    }
+  }
 
   if (o.accept) {
     const std::string out = o.out_profile.empty() ? v.id + ".model-check.json" : o.out_profile;
@@ -108,6 +131,15 @@ int runModelCheck(const ModelCheckOpts& o) {
   if (o.json != "-") {
     if (!readReport.clean()) std::cout << readReport.summary() << "\n";
     std::cout << analysis::toText(r) << "\n" << discrepancy::toText(mc);
+    if (j.contains("model_check") && j["model_check"].contains("glider_ballast")) {
+      const auto& g = j["model_check"]["glider_ballast"];
+      std::printf("Glider, jointly with the accepted terms: add %+.0f +- %.0f g for neutral (pump at zero) at the target\n",
+                  g["mass_to_add_g"].get<double>(), g.value("mass_to_add_sigma_g", 0.0));
+      if (g.value("mass_drift_g_per_h", 0.0) != 0.0)
+        std::printf("  mass drift %+.1f g/h (carried to the end of the log: %+.0f g; carry it to the deployment day)\n",
+                    g["mass_drift_g_per_h"].get<double>(), g["mass_change_at_end_g"].get<double>());
+      if (j["recommendation"].is_object()) std::cout << gliderPlanText(j["recommendation"]);
+    }
     if (o.accept) {
       if (mc.missing_physics.empty())
         std::cout << "Nothing accepted: no profile written.\n";
@@ -144,6 +176,7 @@ Command addModelCheckCommand(CLI::App& app) {
   cmd->add_option("--cg-y-sigma-mm", o->cg_y_sigma_mm,
                   "AUV: CG y is known from a roll test to this sigma (mm); lets a roll-sensor bias be told from CG y");
   cmd->add_option("--terms", o->terms, "Only try these library terms (comma-separated ids)");
+  o->target.add(cmd);
   cmd->add_option("--min-depth", o->min_depth, "Gliders: use samples deeper than this, m (default 10)");
   return {cmd, [o]() { return runModelCheck(*o); }};
 }

@@ -19,6 +19,8 @@
 #include "history/store.h"
 #include "history/transaction.h"
 #include "number_list.h"
+#include "target_flags.h"
+#include "planning/glider_ballast_plan.h"
 #include "planning/plan_sources.h"
 #include "planning/pre_mission_plan.h"
 #include "vehicle/json_reader.h"
@@ -31,7 +33,27 @@ struct PlanOpts {
   std::string vehicle, config, report, installed, temperature, salinity, depth, max_depth, latitude = "45",
       policy = "exact", sigma_factor = "1.645", json, history;
   bool optional_pieces = false, accept = false, no_save = false, no_surface_check = false;
+  TargetFlags target;
 };
+
+// Gliders: the grams per bottle (or lead and C_VBD) from a report, for the
+// report's target or the one given; the history is not involved.
+int runGliderPlan(const PlanOpts& o, const VehicleProfile& v) {
+  if (o.report.empty())
+    throw InputError("report", "missing", "give --report REPORT.json from 'auvballast analyze' or 'model-check' of a glider log");
+  GliderPlanInput in;
+  in.report = JsonReader::parseFile(o.report);
+  if (!o.installed.empty())
+    in.installed_kg = parseNumberList(o.installed, v.points.size(), "installed",
+                                      "the kg of ballast now at each point, in profile order");
+  const analysis::GliderTargetRequest q = o.target.request();
+  if (q.any()) in.target = targetFromReport(in.report, q, parseNumber(o.latitude, "latitude", "the latitude in degrees"));
+  nlohmann::json j = planGliderBallast(v, in);
+  j["sources"] = {{"analysis", o.report}};
+  if (!o.json.empty()) writeJson(j, o.json);
+  if (o.json != "-") std::cout << gliderPlanText(j);
+  return 0;
+}
 
 // What the plan starts from, wherever it came from.
 struct Sources {
@@ -85,9 +107,10 @@ PlannedWater plannedWater(const PlanOpts& o, const TrimEstimate& e, const Source
 
 int runPlan(const PlanOpts& o) {
   if (o.vehicle.empty()) throw InputError("vehicle", "missing", "give --vehicle ID (see 'auvballast vehicles')");
+  VehicleProfile v = VehicleCatalog(vehiclesDir()).load(o.vehicle);
+  if (v.kind == "glider") return runGliderPlan(o, v);
   if (o.config.empty()) throw InputError("config", "missing", "give --config ID (thesis xx-xx-xx, e.g. 1-2-3)");
   requireValidConfigurationId(o.config);
-  VehicleProfile v = VehicleCatalog(vehiclesDir()).load(o.vehicle);
   PreMissionInput in;
   in.policy = planPolicyFromString(o.policy);
   in.use_optional_pieces = o.optional_pieces;
@@ -225,6 +248,7 @@ Command addPlanCommand(CLI::App& app) {
   cmd->add_option("--salinity", o->salinity, "Next mission's practical salinity, PSU (default: last mission's)");
   cmd->add_option("--depth", o->depth, "Next mission's operating depth, m (default: last mission's)");
   cmd->add_option("--max-depth", o->max_depth, "Deepest planned depth, m, if deeper than the operating depth");
+  o->target.add(cmd);
   cmd->add_option("--latitude", o->latitude, "Latitude for depth->pressure, deg")->capture_default_str();
   cmd->add_option("--policy", o->policy, "exact | half (about half the change) | classic (the thesis's table)")
       ->capture_default_str();

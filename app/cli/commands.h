@@ -21,6 +21,7 @@ Command addConvertCommand(CLI::App& app);
 Command addPlanCommand(CLI::App& app);
 Command addHistoryCommand(CLI::App& app);
 Command addModelCheckCommand(CLI::App& app);
+Command addProfileCommand(CLI::App& app);
 // History database: the flag, else $AUVBALLAST_HISTORY, else $XDG_DATA_HOME/auvballast/history.sqlite.
 std::string historyPath(const std::string& flag);
 

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
       auv::cli::addHistoryCommand,
       auv::cli::addSimulateCommand,
       auv::cli::addModelCheckCommand,
+      auv::cli::addProfileCommand,
   };
   for (auto add : commands) {
     auto cmd = add(app);

@@ -64,6 +64,11 @@ nlohmann::json toJson(const AnalysisReport& r) {
     j["mass_to_add_g"] = r.mass_to_add_g.known ? num(r.mass_to_add_g.value) : nullptr;
     j["mass_to_add_sigma_g"] = r.mass_to_add_g.known ? num(r.mass_to_add_g.sigma) : nullptr;
     j["target_density_kgm3"] = num(r.target_density_kgm3);
+    if (std::isfinite(r.target_density_kgm3))
+      j["target"] = {{"density_kgm3", num(r.target_density_kgm3)},
+                     {"pressure_dbar", num(r.target_pressure_dbar)},
+                     {"temperature_degC", num(r.target_temperature_degC)},
+                     {"basis", r.target_basis}};
   }
   j["errors"] = {{"depth_m", num(r.depth_error_m.mean)},
                  {"pitch_deg", num(r.pitch_error_deg.mean)},
@@ -151,8 +156,10 @@ std::string toText(const AnalysisReport& r) {
   }
   if (r.vehicle_kind == "glider") {
     if (r.mass_to_add_g.known)
-      o << "  ballast to add for neutral at " << fmt("%.2f", r.target_density_kgm3) << " kg/m3: "
-        << fmt("%+.0f", r.mass_to_add_g.value) << " +- " << fmt("%.0f", r.mass_to_add_g.sigma) << " g\n";
+      o << "  ballast to add for neutral (pump at zero) at " << fmt("%.2f", r.target_density_kgm3) << " kg/m3, "
+        << fmt("%.0f", r.target_pressure_dbar) << " dbar, " << fmt("%.2f", r.target_temperature_degC) << " degC: "
+        << fmt("%+.0f", r.mass_to_add_g.value) << " +- " << fmt("%.0f", r.mass_to_add_g.sigma) << " g\n"
+        << "    target: " << r.target_basis << "\n";
   }
   if (r.details.contains("classic")) {
     const auto& c = r.details["classic"];

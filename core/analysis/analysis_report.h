@@ -59,9 +59,14 @@ struct AnalysisReport {
   double cruise_rpm = std::numeric_limits<double>::quiet_NaN();
   double cruise_speed_mps = std::numeric_limits<double>::quiet_NaN();
   EstimatedValue cruise_roll_deg, cruise_cg_y_mm;
-  // Gliders: signed grams to add for neutral buoyancy at target_density_kgm3.
+  // Gliders: signed grams to add for neutral buoyancy, pump at zero, in the
+  // target water (density, pressure, temperature; `target_basis` says where
+  // they came from).
   EstimatedValue mass_to_add_g;
   double target_density_kgm3 = std::numeric_limits<double>::quiet_NaN();
+  double target_pressure_dbar = std::numeric_limits<double>::quiet_NaN();
+  double target_temperature_degC = std::numeric_limits<double>::quiet_NaN();
+  std::string target_basis;
 
   // Errors (thesis sign conventions): depth commanded - measured, pitch
   // measured - commanded (or pitch at steady depth without a command), roll

@@ -96,6 +96,10 @@ class AlphaTable {
 
 double glideW(const GliderFlightConstants& c, double V0, double Cd0, double alpha_abs_fn_result, double theta,
               const GlideSample& s) {
+  if (c.form == GlideForm::kSeaglider) {
+    const double V = V0 * volumeFactor(c, s.pressure_dbar, s.temperature_degC) + s.pump_m3;
+    return seagliderVerticalSpeed(c, units::g0 * (s.density_kgm3 * V - c.mass_kg), theta, Cd0);
+  }
   const double alpha = std::copysign(alpha_abs_fn_result, theta);
   const double path = theta + alpha;
   const double V = V0 * volumeFactor(c, s.pressure_dbar, s.temperature_degC) + s.pump_m3;
@@ -203,6 +207,33 @@ LmResult levenbergMarquardt(const Problem& p, double nb, double Cd0, int max_ite
 }
 
 }  // namespace
+
+double seagliderVerticalSpeed(const GliderFlightConstants& c, double FB, double theta, double hd_b) {
+  // basestation's hydro_model iteration (Eriksen et al. 2001, eqs. 7-8) on
+  // magnitudes: glide angle g = |pitch| + alpha, both in degrees.
+  if (!(FB * theta > 0.0) || !(hd_b > 0.0)) return 0.0;
+  const double B = std::abs(FB), phi = units::radToDeg(std::abs(theta));
+  const double l2 = c.hull_length_m * c.hull_length_m, a = c.hd_a_per_deg, cc = c.hd_c_per_deg2, s = c.hd_s;
+  double g = 45.0;
+  double q = std::pow(B / (l2 * hd_b), 1.0 / (1.0 + s));
+  bool flying = false;
+  for (int j = 0; j < 40; ++j) {
+    const double qPrev = q;
+    const double scaled = std::pow(qPrev, -s);
+    const double tg = std::tan(units::degToRad(g));
+    const double D = a * a * tg * tg * scaled / (4.0 * hd_b * cc);
+    if (!(D > 1.0)) return 0.0;
+    const double r = std::sqrt(1.0 - 1.0 / D);
+    q = B * std::sin(units::degToRad(g)) * scaled / (2.0 * l2 * hd_b) * (1.0 + r);
+    const double alpha = a * tg / (2.0 * cc) * (1.0 - r);
+    g = phi + alpha;
+    if (!(g < 89.9)) return 0.0;
+    flying = true;
+    if (j >= 2 && std::abs(q - qPrev) <= 1e-9 * q) break;
+  }
+  if (!flying || !(q > 0.0)) return 0.0;
+  return std::copysign(std::sqrt(2.0 * q / c.rho0_kgm3) * std::sin(units::degToRad(g)), theta);
+}
 
 double steadyAngleOfAttackNear(const GliderFlightConstants& c, double phi_abs_rad, double Cd0, double start) {
   return newtonAlphaAbs(c.lift_slope_per_rad, c.induced_drag_per_rad2, Cd0, phi_abs_rad, start);

@@ -18,7 +18,17 @@
 
 namespace auv::analysis {
 
+// Hydrodynamic form of the steady glide: the Slocum form above (gliderflight)
+// or the Seaglider form of Eriksen et al. 2001 as basestation's hydro_model
+// uses it: lift = hd_a alpha q l^2, drag = (hd_b q^hd_s + hd_c alpha^2) q l^2,
+// alpha in degrees, q = rho0 U^2 / 2. For the Seaglider form the fitted drag
+// parameter (called Cd0 in the fits) is hd_b.
+enum class GlideForm { kSlocum, kSeaglider };
+
 struct GliderFlightConstants {
+  GlideForm form = GlideForm::kSlocum;
+  double hd_a_per_deg = 0.0, hd_c_per_deg2 = 0.0, hd_s = -0.25, hull_length_m = 1.8, rho0_kgm3 = 1027.5;
+  double drag_start = 0.15;  // starting value of the fitted drag parameter (Cd0, or hd_b)
   double mass_kg = 0.0;
   double wing_area_m2 = 0.1;             // S (gliderflight default)
   double lift_slope_per_rad = 7.53;      // a = a_w + a_h = 3.73 + 3.8 (gliderflight, AR 7, 43 deg sweep)
@@ -59,6 +69,10 @@ double steadyAngleOfAttackNear(const GliderFlightConstants& c, double phi_abs_ra
 // the net force cannot drive a glide in the pitched direction.
 double steadyGlideVerticalSpeed(const GliderFlightConstants& c, const ReferenceState& ref, double nb_kg,
                                 double Cd0, const GlideSample& s);
+
+// Seaglider form: vertical speed (up positive) for a net buoyancy force
+// FB_N (up positive) at pitch theta_rad; 0 when stalled or FB opposes the pitch.
+double seagliderVerticalSpeed(const GliderFlightConstants& c, double FB_N, double theta_rad, double hd_b);
 
 // Hull volume at zero pump and zero pressure, reference temperature.
 double hullVolumeForNetBuoyancy(const GliderFlightConstants& c, const ReferenceState& ref, double nb_kg);

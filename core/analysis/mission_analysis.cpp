@@ -8,6 +8,7 @@
 #include "analysis/auv_steady_model.h"
 #include "analysis/auv_trim_estimation.h"
 #include "analysis/classic_thesis.h"
+#include "analysis/glider_trim.h"
 #include "analysis/series_tools.h"
 #include "analysis/statistics.h"
 #include "common/input_error.h"
@@ -191,6 +192,20 @@ GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::v
     c.induced_drag_per_rad2 = f.numberIn("induced_drag_per_rad2", 0.0, 1000.0, c.induced_drag_per_rad2);
     if (f.has("compressibility_per_dbar")) c.compressibility_per_dbar = f.numberIn("compressibility_per_dbar", 0.0, 1e-3);
     c.pitch_scale = f.numberIn("pitch_scale", 0.1, 10.0, 1.0);
+    const std::string form = f.text("form", "slocum");
+    if (form == "seaglider") {
+      c.form = GlideForm::kSeaglider;
+      c.hd_a_per_deg = f.numberIn("hd_a", 1e-6, 1.0);
+      c.drag_start = f.numberIn("hd_b", 1e-5, 1.0);
+      c.hd_c_per_deg2 = f.numberIn("hd_c", 1e-9, 1.0);
+      c.hd_s = f.numberIn("hd_s", -0.9, 0.0, -0.25);
+      c.hull_length_m = f.numberIn("hull_length_m", 0.5, 5.0, 1.8);
+      c.rho0_kgm3 = f.numberIn("rho0_kgm3", 990.0, 1080.0, 1027.5);
+    } else if (form != "slocum") {
+      f.fail("form", "unknown hydrodynamic form '" + form + "'", "use \"slocum\" (gliderflight) or \"seaglider\" (hd_a, hd_b, hd_c)");
+    } else {
+      c.drag_start = f.numberIn("Cd0", 1e-3, 3.0, 0.15);
+    }
     c.pitch_offset_rad = units::degToRad(f.numberIn("pitch_offset_deg", -45.0, 45.0, 0.0));
   } else {
     notes.push_back("glider flight-model constants are gliderflight's Slocum defaults (S = 0.1 m2, lift slope 7.53 /rad, "
@@ -439,12 +454,15 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
           if (!water.T.valid()) ref.temperature_degC = sT2 / static_cast<double>(samples.size());
         }
       }
-      fit = fitSteadyGlide(samples, c, ref, o.glider_fit);
+      GliderFitOptions fo = o.glider_fit;
+      if (c.form == GlideForm::kSeaglider) fo.Cd0_start = c.drag_start;
+      fit = fitSteadyGlide(samples, c, ref, fo);
       if (fit.samples >= 10 && o.glider_pitch_bias_sigma_deg > 0) {
         GliderFlightConstants biased = c;
         biased.pitch_offset_rad += units::degToRad(o.glider_pitch_bias_sigma_deg);
         GliderFitOptions quick = o.glider_fit;
         quick.max_jackknife_groups = 0;
+        quick.Cd0_start = fo.Cd0_start;
         const GliderFitResult b = fitSteadyGlide(samples, biased, ref, quick);
         pitchBiasSigma = std::abs(b.net_buoyancy_kg - fit.net_buoyancy_kg);
         fit.net_buoyancy_sigma_kg = std::hypot(fit.net_buoyancy_sigma_kg, pitchBiasSigma);
@@ -458,19 +476,35 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     } else {
       if (!fit.converged) rep.warnings.push_back("glider flight-model fit: " + fit.message);
       rep.net_buoyancy_kg = {true, fit.net_buoyancy_kg, fit.net_buoyancy_sigma_kg, ""};
-      const double target = o.target_density_kgm3.value_or(ref.density_kgm3);
-      rep.target_density_kgm3 = target;
+      GliderTargetRequest tq = o.glider_target;
+      if (!tq.density_kgm3) tq.density_kgm3 = o.target_density_kgm3;
+      GliderTarget target;
+      try {
+        target = resolveGliderTarget(log, tq, latitude);
+      } catch (const InputError& e) {
+        if (tq.any()) throw;
+        // The log cannot place its own deepest water: the fit's reference state.
+        target = {ref.density_kgm3, ref.pressure_dbar, ref.temperature_degC, kNaN,
+                  "the log's mean operating water (" + e.problem() + ")"};
+      }
+      rep.target_density_kgm3 = target.density_kgm3;
+      rep.target_pressure_dbar = target.pressure_dbar;
+      rep.target_temperature_degC = target.temperature_degC;
+      rep.target_basis = target.basis;
       // Ballast goes inside the hull (no volume change): neutral when
-      // m' = rho_target V_op, V_op = (m + nb) / rho_ref.
-      const double k = target / ref.density_kgm3;
-      rep.mass_to_add_g = {true, 1000.0 * (k * (c.mass_kg + fit.net_buoyancy_kg) - c.mass_kg),
-                           1000.0 * k * fit.net_buoyancy_sigma_kg, ""};
+      // m' = rho_t V(p_t, T_t) with the profile's compressibility and
+      // thermal expansion carrying the fitted volume to the target.
+      const double add = gliderMassToAddKg(fit.hull_volume_m3, c.compressibility_per_dbar, c.thermal_expansion_per_degC,
+                                           c.reference_temperature_degC, target, c.mass_kg);
+      const double k = (add + c.mass_kg) / (c.mass_kg + fit.net_buoyancy_kg);
+      rep.mass_to_add_g = {true, 1000.0 * add, 1000.0 * k * fit.net_buoyancy_sigma_kg, ""};
       const double Vop = (c.mass_kg + fit.net_buoyancy_kg) / ref.density_kgm3;
       nlohmann::json d;
       d["model"] = "steady glide (Merckelbach et al. 2010, gliderflight steady state), fitted net buoyancy and Cd0";
       d["observation_channel"] = obsChannel;
       d["mass_kg"] = c.mass_kg;
       d["Cd0"] = fit.Cd0;
+      d["drag_parameter"] = c.form == GlideForm::kSeaglider ? "hd_b (Seaglider form, Eriksen et al. 2001)" : "Cd0";
       d["Cd0_sigma"] = fit.Cd0_sigma;
       d["hull_volume_m3"] = fit.hull_volume_m3;
       d["neutral_density_kgm3"] = c.mass_kg / Vop;
@@ -489,8 +523,24 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
                         {"induced_drag_per_rad2", c.induced_drag_per_rad2},
                         {"compressibility_per_dbar", c.compressibility_per_dbar},
                         {"thermal_expansion_per_degC", c.thermal_expansion_per_degC},
+                        {"reference_temperature_degC", c.reference_temperature_degC},
                         {"pitch_scale", c.pitch_scale}, {"pitch_offset_deg", units::radToDeg(c.pitch_offset_rad)}};
       rep.details["glider_fit"] = d;
+    }
+    {
+      const GliderTrim t = estimateGliderTrim(log, win);
+      nlohmann::json d;
+      d["pitch"] = t.pitch_known
+                       ? nlohmann::json{{"model", "tan(pitch) = T1 pump_cm3 + T2 battery_mm + T3 (gliderflight glidertrim)"},
+                                        {"T1_per_cm3", t.T1_per_cm3}, {"T2_per_mm", t.T2_per_mm}, {"T3", t.T3},
+                                        {"rms_tan", t.rms_tan}, {"samples", t.pitch_samples},
+                                        {"battery_for_level_mm", t.battery_for_level_mm},
+                                        {"battery_min_mm", t.battery_min_mm}, {"battery_max_mm", t.battery_max_mm}}
+                       : nlohmann::json{{"why_not", t.pitch_why_not}};
+      d["roll"] = t.roll_known ? nlohmann::json{{"roll_deg", t.roll_deg}, {"roll_sigma_deg", t.roll_sigma_deg},
+                                                {"samples", t.roll_samples}, {"basis", t.roll_basis}}
+                               : nlohmann::json{{"why_not", t.roll_why_not}};
+      rep.details["glider_trim"] = d;
     }
   }
 

@@ -11,6 +11,7 @@
 
 #include "analysis/analysis_report.h"
 #include "analysis/glider_flight.h"
+#include "analysis/glider_target.h"
 #include "analysis/segments.h"
 #include "missionlog/mission_log.h"
 #include "vehicle/vehicle_profile.h"
@@ -21,7 +22,10 @@ struct AnalysisOptions {
   std::string log_name;
   std::vector<double> installed_kg;  // adjustment weight at each profile point during the mission; empty = none given
   std::optional<double> bg_m;        // CG below CB from an inclining/roll test (--bg-mm)
-  std::optional<double> target_density_kgm3;  // gliders: default = mean in-situ density below glider_min_depth_m
+  std::optional<double> target_density_kgm3;  // gliders: same as glider_target.density_kgm3 (kept for callers)
+  // Gliders: the next deployment's water (default: the log's own water at
+  // the bottom of its deepest yo; analysis/glider_target.h).
+  GliderTargetRequest glider_target;
   SegmentOptions segments;           // `glider` is set from the vehicle kind
   double coefficient_rel_sigma = 0.10;
   double bg_profile_rel_sigma = 0.25;

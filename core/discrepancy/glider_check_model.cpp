@@ -30,28 +30,39 @@ class GliderCheckModel::AlphaCache {
     c_.pitch_scale = 1.0;
     c_.pitch_offset_rad = 0.0;
   }
-  const std::vector<double>& table(double Cd0) const {
+  // Keyed on the drag coefficient and the lift slope (both may be fitted).
+  const std::vector<double>& table(double Cd0, double a) const {
     for (auto& e : entries_)
-      if (e.first == Cd0) return e.second;
-    if (entries_.size() >= 8) entries_.erase(entries_.begin());
+      if (e.Cd0 == Cd0 && e.a == a) return e.alpha;
+    if (entries_.size() >= 12) entries_.erase(entries_.begin());
+    analysis::GliderFlightConstants c = c_;
+    c.lift_slope_per_rad = a;
     const auto n = static_cast<std::size_t>((kHi - kLo) / kStep) + 2;
-    std::vector<double> a(n);
-    a[0] = analysis::steadyAngleOfAttack(c_, kLo, Cd0);
-    for (std::size_t i = 1; i < n; ++i) a[i] = analysis::steadyAngleOfAttackNear(c_, kLo + static_cast<double>(i) * kStep, Cd0, a[i - 1]);
-    entries_.emplace_back(Cd0, std::move(a));
-    return entries_.back().second;
+    std::vector<double> t(n);
+    t[0] = analysis::steadyAngleOfAttack(c, kLo, Cd0);
+    for (std::size_t i = 1; i < n; ++i) t[i] = analysis::steadyAngleOfAttackNear(c, kLo + static_cast<double>(i) * kStep, Cd0, t[i - 1]);
+    entries_.push_back({Cd0, a, std::move(t)});
+    return entries_.back().alpha;
   }
-  double alphaAbs(const std::vector<double>& a, double Cd0, double phi) const {
+  double alphaAbs(const std::vector<double>& t, double Cd0, double a, double phi) const {
     const double x = (phi - kLo) / kStep;
-    if (!(x >= 0.0) || x >= static_cast<double>(a.size() - 1)) return analysis::steadyAngleOfAttack(c_, phi, Cd0);
+    if (!(x >= 0.0) || x >= static_cast<double>(t.size() - 1)) {
+      analysis::GliderFlightConstants c = c_;
+      c.lift_slope_per_rad = a;
+      return analysis::steadyAngleOfAttack(c, phi, Cd0);
+    }
     const auto i = static_cast<std::size_t>(x);
     const double f = x - static_cast<double>(i);
-    return a[i] + f * (a[i + 1] - a[i]);
+    return t[i] + f * (t[i + 1] - t[i]);
   }
 
  private:
   analysis::GliderFlightConstants c_;
-  mutable std::vector<std::pair<double, std::vector<double>>> entries_;
+  struct Entry {
+    double Cd0, a;
+    std::vector<double> alpha;
+  };
+  mutable std::vector<Entry> entries_;
 };
 
 GliderCheckModel::~GliderCheckModel() = default;
@@ -208,7 +219,21 @@ GliderCheckModel::GliderCheckModel(const MissionLog& log, const VehicleProfile& 
       if (std::isnan(table_.since_actuator_s[i])) table_.since_actuator_s[i] = rowTimes[i] - rowTimes[b0];
     }
   }
+  {
+    // The lift slope is fitted only when the glides span enough pitch: with
+    // one pitch it trades off exactly against Cd0 and the volume.
+    std::vector<double> ph;
+    for (const Row& r : rows_) ph.push_back(std::abs(r.pitch_rad));
+    std::sort(ph.begin(), ph.end());
+    const double spread = ph[ph.size() * 9 / 10] - ph[ph.size() / 10];
+    fit_lift_ = o.fit_lift_slope && spread >= units::degToRad(o.lift_slope_min_pitch_spread_deg);
+    notes_.push_back(fit_lift_ ? "lift slope fitted with the ballast state (pitch spread " +
+                                     std::to_string(static_cast<int>(std::lround(units::radToDeg(spread)))) + " deg)"
+                               : "lift slope held at the profile's value (the glides span only " +
+                                     std::to_string(static_cast<int>(std::lround(units::radToDeg(spread)))) + " deg of pitch)");
+  }
   t_ref_ = 0.5 * (rowTimes.front() + rowTimes.back());
+  t_end_ = log.time.empty() ? rowTimes.back() : log.time.back();
   double sr = 0, sp = 0, sT = 0;
   for (const Row& r : rows_) {
     sr += r.rho;
@@ -246,7 +271,9 @@ GliderCheckModel::Prepared GliderCheckModel::prepare(const Params& p) const {
   // the terms do to the volume there.
   q.V0 = (c_.mass_kg + p.nuisance[0]) /
          (ref_.density_kgm3 * volumeFactor(q.terms, ref_.pressure_dbar, ref_.temperature_degC, 0.0));
-  q.alpha = &alpha_->table(q.Cd0);
+  q.lift_scale = fit_lift_ ? p.nuisance[2] : 1.0;
+  q.a = c_.lift_slope_per_rad * q.lift_scale;
+  if (c_.form == analysis::GlideForm::kSlocum) q.alpha = &alpha_->table(q.Cd0, q.a);
   return q;
 }
 
@@ -260,7 +287,15 @@ double GliderCheckModel::rowW(const Prepared& q, std::size_t i, double p_dbar, E
   e = Effects{};
   applyEffects(q.terms, in, e);
   const double th = r.pitch_rad - e.pitch_bias_rad;
-  const double a = std::copysign(alpha_->alphaAbs(*q.alpha, q.Cd0, std::abs(th)), th);
+  if (c_.form == analysis::GlideForm::kSeaglider) {
+    const double f = (1.0 - c_.compressibility_per_dbar * p_dbar) *
+                     (1.0 + c_.thermal_expansion_per_degC * (r.T - c_.reference_temperature_degC)) * e.volume_factor;
+    const double FB = units::g0 * (r.rho * (q.V0 * f + r.pump_m3) - (c_.mass_kg + e.extra_mass_kg));
+    analysis::GliderFlightConstants c = c_;
+    c.hd_a_per_deg *= q.lift_scale;
+    return analysis::seagliderVerticalSpeed(c, FB, th, q.Cd0) + e.vertical_current_mps;
+  }
+  const double a = std::copysign(alpha_->alphaAbs(*q.alpha, q.Cd0, q.a, std::abs(th)), th);
   const double path = th + a;
   const double f = (1.0 - c_.compressibility_per_dbar * p_dbar) *
                    (1.0 + c_.thermal_expansion_per_degC * (r.T - c_.reference_temperature_degC)) * e.volume_factor;
@@ -268,6 +303,25 @@ double GliderCheckModel::rowW(const Prepared& q, std::size_t i, double p_dbar, E
   const double U2 = 2.0 * FB * std::sin(path) / (r.rho * c_.wing_area_m2 * (q.Cd0 + c_.induced_drag_per_rad2 * a * a));
   const double w = U2 > 0.0 ? std::sqrt(U2) * std::sin(path) : 0.0;
   return w + e.vertical_current_mps;
+}
+
+double GliderCheckModel::massChangeAtEndKg(const Params& p) const {
+  TermValues terms = baseline_;
+  for (std::size_t k = 0; k < kTermCount; ++k) terms[k] += p.terms[k];
+  TermInputs in;
+  in.hours_from_reference = hoursFromReferenceToEnd();
+  in.reference_temperature_degC = c_.reference_temperature_degC;
+  Effects e;
+  applyEffects(terms, in, e);
+  return e.extra_mass_kg;
+}
+
+double GliderCheckModel::hullVolumeM3(const Params& p) const { return prepare(p).V0; }
+
+double GliderCheckModel::massToAddKg(const Params& p, const analysis::GliderTarget& t) const {
+  const Prepared q = prepare(p);
+  const double V = q.V0 * volumeFactor(q.terms, t.pressure_dbar, t.temperature_degC, 0.0);
+  return t.density_kgm3 * V - (c_.mass_kg + massChangeAtEndKg(p));
 }
 
 double GliderCheckModel::modelW(const Params& p, std::size_t i, double p_dbar) const {
@@ -279,13 +333,15 @@ Eigen::VectorXd GliderCheckModel::nuisanceStart() const {
   // Coarse scan so that the fit starts on the right side of the sign change
   // (with the wrong sign the model cannot glide and the cost is flat).
   const std::size_t stride = std::max<std::size_t>(1, rows_.size() / 3000);
+  const Eigen::Index n = fit_lift_ ? 3 : 2;
   Params p;
-  p.nuisance = Eigen::Vector2d(0.0, 0.15);
+  p.nuisance = Eigen::VectorXd::Ones(n);
   double best = std::numeric_limits<double>::infinity();
-  Eigen::Vector2d bestX(0.0, 0.15);
-  for (double Cd0 : {0.005, 0.01, 0.02, 0.04, 0.08, 0.15, 0.3, 0.6}) {
+  Eigen::VectorXd bestX = p.nuisance;
+  for (double Cd0 : {0.005, 0.01, 0.02, 0.04, 0.08, 0.15, 0.3, 0.6, c_.drag_start}) {
     for (double nb = -1.5; nb <= 1.5 + 1e-9; nb += 0.025) {
-      p.nuisance = Eigen::Vector2d(nb, Cd0);
+      p.nuisance[0] = nb;
+      p.nuisance[1] = Cd0;
       double ss = 0.0;
       const Prepared q = prepare(p);
       Effects e;
@@ -302,9 +358,19 @@ Eigen::VectorXd GliderCheckModel::nuisanceStart() const {
   return bestX;
 }
 
-Eigen::VectorXd GliderCheckModel::nuisanceScale() const { return Eigen::Vector2d(0.01, 0.01); }
-Eigen::VectorXd GliderCheckModel::nuisanceLower() const { return Eigen::Vector2d(-5.0, 1e-3); }
-Eigen::VectorXd GliderCheckModel::nuisanceUpper() const { return Eigen::Vector2d(5.0, 3.0); }
+std::vector<std::string> GliderCheckModel::nuisanceNames() const {
+  if (fit_lift_) return {"net_buoyancy_kg", "Cd0", "lift_slope_scale"};
+  return {"net_buoyancy_kg", "Cd0"};
+}
+Eigen::VectorXd GliderCheckModel::nuisanceScale() const {
+  return fit_lift_ ? Eigen::VectorXd(Eigen::Vector3d(0.01, 0.01, 0.01)) : Eigen::VectorXd(Eigen::Vector2d(0.01, 0.01));
+}
+Eigen::VectorXd GliderCheckModel::nuisanceLower() const {
+  return fit_lift_ ? Eigen::VectorXd(Eigen::Vector3d(-5.0, 1e-3, 0.5)) : Eigen::VectorXd(Eigen::Vector2d(-5.0, 1e-3));
+}
+Eigen::VectorXd GliderCheckModel::nuisanceUpper() const {
+  return fit_lift_ ? Eigen::VectorXd(Eigen::Vector3d(5.0, 3.0, 2.0)) : Eigen::VectorXd(Eigen::Vector2d(5.0, 3.0));
+}
 
 bool GliderCheckModel::applicable(std::size_t term) const {
   const PhysicsTerm& t = termLibrary()[term];
@@ -368,7 +434,8 @@ void GliderCheckModel::simulationError(const Params& p, std::vector<double>& out
 
 std::string GliderCheckModel::description() const {
   return "steady glide (Merckelbach et al. 2010) on " + obs_channel_ +
-         "-derived vertical velocity; ballast state: net buoyancy at the mean operating state and Cd0";
+         "-derived vertical velocity; ballast state: net buoyancy at the mean operating state and Cd0" +
+         std::string(fit_lift_ ? ", with the lift slope" : "");
 }
 
 }  // namespace auv::discrepancy

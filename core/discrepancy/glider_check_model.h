@@ -12,7 +12,7 @@
 //    velocity.
 // Ballast state: net buoyancy at the log's mean operating state (pump at its
 // zero reference, as in core/analysis) and the drag coefficient Cd0, both
-// always fitted. The model's own constants (lift slope, Cd1, wing area, pitch
+// always fitted, and the lift slope when the pitch range allows. The model's own constants (lift slope, Cd1, wing area, pitch
 // correction, hull compressibility and thermal expansion) come from the
 // profile; a compressibility of 0 in the profile is taken as 0, so the check
 // can say whether the log needs one.
@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "analysis/glider_flight.h"
+#include "analysis/glider_target.h"
 #include "discrepancy/check_model.h"
 #include "missionlog/mission_log.h"
 #include "vehicle/vehicle_profile.h"
@@ -38,6 +39,10 @@ struct GliderCheckOptions {
   double rate_window_s = 10.0;
   std::size_t max_rows = 30000;  // evenly decimated beyond this (the rate is a 10 s boxcar)
   double default_density_kgm3 = 1025.0;  // only when the log has no density
+  // Lift slope (Seaglider: hd_a) fitted as a scale of the profile's value
+  // when the glides' |pitch| spans at least this much (10th-90th percentile).
+  bool fit_lift_slope = false;  // off: on synthetic logs it trades against pitch bias and mass drift
+  double lift_slope_min_pitch_spread_deg = 5.0;
 };
 
 class GliderCheckModel final : public CheckModel {
@@ -49,7 +54,7 @@ class GliderCheckModel final : public CheckModel {
 
   unsigned family() const override { return kGliderFamily; }
   const SampleTable& samples() const override { return table_; }
-  std::vector<std::string> nuisanceNames() const override { return {"net_buoyancy_kg", "Cd0"}; }
+  std::vector<std::string> nuisanceNames() const override;
   Eigen::VectorXd nuisanceStart() const override;
   Eigen::VectorXd nuisanceScale() const override;
   Eigen::VectorXd nuisanceLower() const override;
@@ -68,6 +73,17 @@ class GliderCheckModel final : public CheckModel {
   const TermValues& baseline() const { return baseline_; }
   bool hasDepthReference() const { return has_depth_ref_; }
 
+  // Mass (kg) to add for neutral at `target` with the pump at zero: the
+  // hull volume of these parameters carried to the target's pressure and
+  // temperature by the profile's and the fitted volume terms, against the
+  // mass at the END of the log (a fitted mass drift included).
+  double massToAddKg(const Params& p, const analysis::GliderTarget& target) const;
+  // Hull volume at p = 0, the reference temperature and pump zero (m3).
+  double hullVolumeM3(const Params& p) const;
+  // Mass the vehicle has at the end of the log minus its profile mass.
+  double massChangeAtEndKg(const Params& p) const;
+  double hoursFromReferenceToEnd() const { return (t_end_ - t_ref_) / 3600.0; }
+
   // Model vertical velocity (up positive, through the water plus current)
   // at a row for the given parameters, with pressure `p_dbar`.
   double modelW(const Params& p, std::size_t row, double p_dbar) const;
@@ -79,7 +95,7 @@ class GliderCheckModel final : public CheckModel {
   class AlphaCache;
   struct Prepared {
     TermValues terms{};
-    double V0 = 0.0, Cd0 = 0.0;
+    double V0 = 0.0, Cd0 = 0.0, lift_scale = 1.0, a = 0.0;
     const std::vector<double>* alpha = nullptr;
   };
   Prepared prepare(const Params& p) const;
@@ -91,9 +107,11 @@ class GliderCheckModel final : public CheckModel {
   TermValues baseline_{};
   std::vector<Row> rows_;
   SampleTable table_;
-  bool has_depth_ref_ = false;  // a depth sensor and an independent CTD pressure
+  bool has_depth_ref_ = false;
+  bool fit_lift_ = false;  // a depth sensor and an independent CTD pressure
   double latitude_ = 45.0;
   double t_ref_ = 0.0;
+  double t_end_ = 0.0;  // last instant of the log
   std::string obs_channel_;
   std::vector<std::string> notes_;
   std::unique_ptr<AlphaCache> alpha_;

@@ -92,6 +92,9 @@ MissionLog synthesizeGliderLog(const SyntheticGliderTruth& truth, const Syntheti
                   {"truth_pitch_sensor_bias_deg", sim::formatNumber(truth.pitch_bias_deg)},
                   {"truth_depth_sensor_offset_m", sim::formatNumber(truth.depth_offset_m)},
                   {"truth_vertical_current_mps", sim::formatNumber(truth.vertical_current_mps)},
+                  {"truth_hull_volume_m3", sim::formatNumber(V0)},
+                  {"truth_reference_temperature_degC", sim::formatNumber(c.reference_temperature_degC)},
+                  {"truth_mass_mid_time_s", sim::formatNumber(tMid)},
                   {"position", "lat " + sim::formatNumber(m.latitude_deg) + " lon 0"}};
   const char* names[] = {"depth", "pressure", "pitch", "pump_volume", "pump_volume_cmd", "temperature", "salinity", "density"};
   const char* unitsOf[] = {"m", "dbar", "deg", "cm3", "cm3", "degC", "PSU", "kg/m3"};

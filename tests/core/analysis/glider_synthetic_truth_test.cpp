@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "analysis/glider_flight.h"
+#include "analysis/glider_target.h"
+#include "common/input_error.h"
 #include "analysis/mission_analysis.h"
 #include "glider_truth.h"
 #include "vehicle/vehicle_catalog.h"
@@ -85,9 +87,14 @@ TEST(GliderSyntheticTruth, RecoversNetBuoyancyAndBallastToAdd) {
     EXPECT_NEAR(r.net_buoyancy_kg.value, truth, 3 * r.net_buoyancy_kg.sigma + 0.002);
     EXPECT_LT(r.net_buoyancy_kg.sigma, 0.02);
     EXPECT_NEAR(d["Cd0"].get<double>(), 0.15, 0.02);
-    const double add_truth = 1000 * truthAtReference(g, d["reference"], 1026.0);
-    EXPECT_NEAR(r.mass_to_add_g.value, add_truth, 12.0);
+    // Only the density was given: p and T of the target are the log's own
+    // water at the bottom of its deepest yo (150 m).
     EXPECT_EQ(r.target_density_kgm3, 1026.0);
+    EXPECT_NEAR(r.target_pressure_dbar, seawater::pressureFromDepth(150.0), 4.0);
+    EXPECT_NEAR(r.target_temperature_degC, waterT(150.0), 0.05);
+    const nlohmann::json target = {{"pressure_dbar", r.target_pressure_dbar}, {"temperature_degC", r.target_temperature_degC}};
+    const double add_truth = 1000 * truthAtReference(g, target, 1026.0);
+    EXPECT_NEAR(r.mass_to_add_g.value, add_truth, 12.0);
     // 8 dives and 8 climbs used.
     int glides = 0;
     for (const auto& s : r.segments) glides += s.used;
@@ -99,15 +106,86 @@ TEST(GliderSyntheticTruth, RecoversNetBuoyancyAndBallastToAdd) {
   }
 }
 
-TEST(GliderSyntheticTruth, DefaultTargetIsTheMeanDensityBelow10m) {
+TEST(GliderSyntheticTruth, DefaultTargetIsTheWaterAtTheBottomOfTheDeepestYo) {
   GliderTruth g = truthWithNetBuoyancyAt75m(0.03);
   const AnalysisReport r = analyzeMission(makeGliderLog(g), slocum(), {});
   ASSERT_TRUE(r.mass_to_add_g.known);
-  EXPECT_EQ(r.target_density_kgm3, r.density_kgm3.mean);
-  // At the operating density the ballast to add is the net buoyancy itself.
-  EXPECT_NEAR(r.mass_to_add_g.value, 1000 * r.net_buoyancy_kg.value, 1e-9);
-  EXPECT_GT(r.density_kgm3.mean, waterRho(10.0));
-  EXPECT_LT(r.density_kgm3.mean, waterRho(150.0));
+  // The yos reach 150 m; the CTD there (within 5 m of the deepest point).
+  EXPECT_NEAR(r.target_pressure_dbar, seawater::pressureFromDepth(150.0), 4.0);
+  EXPECT_NEAR(r.target_temperature_degC, waterT(150.0), 0.05);
+  EXPECT_NEAR(r.target_density_kgm3, waterRho(150.0), 0.03);
+  EXPECT_NE(r.target_basis.find("deepest yo"), std::string::npos) << r.target_basis;
+  // Neutral there with the pump at zero: the truth's rho V(p, T) - m.
+  const nlohmann::json target = {{"pressure_dbar", r.target_pressure_dbar}, {"temperature_degC", r.target_temperature_degC}};
+  EXPECT_NEAR(r.mass_to_add_g.value, 1000 * truthAtReference(g, target, r.target_density_kgm3), 10.0);
+  // Deeper and colder than the mean operating water: more to add than the net buoyancy there.
+  EXPECT_GT(r.mass_to_add_g.value, 1000 * r.net_buoyancy_kg.value);
+  const nlohmann::json j = toJson(r);
+  EXPECT_NEAR(j["target"]["density_kgm3"].get<double>(), r.target_density_kgm3, 1e-5);  // the report rounds
+  EXPECT_NEAR(j["target"]["pressure_dbar"].get<double>(), r.target_pressure_dbar, 1e-5);
+  EXPECT_NEAR(j["target"]["temperature_degC"].get<double>(), r.target_temperature_degC, 1e-5);
+}
+
+TEST(GliderSyntheticTruth, TargetDepthTakesTheLogsOwnProfileAndRefusesDepthsNotReached) {
+  GliderTruth g = truthWithNetBuoyancyAt75m(0.03);
+  const MissionLog log = makeGliderLog(g);
+  GliderTargetRequest q;
+  q.depth_m = 60.0;
+  const GliderTarget t = resolveGliderTarget(log, q, 45.0);
+  EXPECT_NEAR(t.temperature_degC, waterT(60.0), 0.03);
+  EXPECT_NEAR(t.pressure_dbar, seawater::pressureFromDepth(60.0, 45.0), 1e-9);
+  EXPECT_NEAR(t.density_kgm3, waterRho(60.0), 0.02);
+  q.depth_m = 400.0;
+  try {
+    resolveGliderTarget(log, q, 45.0);
+    ADD_FAILURE() << "a depth the log never reached must be refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "target-depth");
+  }
+  // All three given: used as they are, whatever the log holds.
+  const GliderTarget given = resolveGliderTarget(log, {1027.9, 500.0, 4.0, std::nullopt}, 45.0);
+  EXPECT_EQ(given.density_kgm3, 1027.9);
+  EXPECT_EQ(given.pressure_dbar, 500.0);
+  EXPECT_EQ(given.temperature_degC, 4.0);
+}
+
+TEST(GliderFlightModel, MassToAddCarriesTheVolumeToTheTarget) {
+  // 0.05 m3 at 0 dbar, 20 degC; kappa 4e-6/dbar, alpha 7e-5/degC: at 500 dbar
+  // and 5 degC the volume is 0.05 (1 - 0.002)(1 - 0.00105) = 0.04984758 m3.
+  GliderTarget t{1027.0, 500.0, 5.0, 35.0, ""};
+  EXPECT_NEAR(gliderMassToAddKg(0.05, 4e-6, 7e-5, 20.0, t, 51.0), 1027.0 * 0.05 * 0.998 * 0.99895 - 51.0, 1e-12);
+}
+
+TEST(GliderFlightModel, SeagliderFormBalancesLiftDragAndBuoyancy) {
+  // Eriksen et al. 2001: lift = hd_a alpha q l^2, drag = (hd_b q^s + hd_c alpha^2) q l^2 with
+  // alpha in degrees; steady flight: lift = B cos(glide), drag = B sin(glide).
+  GliderFlightConstants c;
+  c.form = GlideForm::kSeaglider;
+  c.hd_a_per_deg = 0.0036;
+  c.hd_c_per_deg2 = 5.7e-6;
+  c.hd_s = -0.25;
+  c.hull_length_m = 1.8;
+  c.rho0_kgm3 = 1027.5;
+  const double hd_b = 0.0106;
+  for (double pitch_deg : {-25.0, -16.0, 18.0, 30.0}) {
+    const double B = std::copysign(1.5, pitch_deg);  // N, the sign of the pitch
+    const double w = seagliderVerticalSpeed(c, B, units::degToRad(pitch_deg), hd_b);
+    ASSERT_NE(w, 0.0);
+    EXPECT_EQ(std::signbit(w), std::signbit(pitch_deg));
+    // Recover U and the glide angle from w by the lift/drag balance and check both equations.
+    const double l2 = 1.8 * 1.8;
+    double best = 1e9;
+    for (double g = std::abs(pitch_deg) + 0.01; g < 89.0; g += 0.001) {
+      const double U = std::abs(w) / std::sin(units::degToRad(g));
+      const double q = 0.5 * 1027.5 * U * U;
+      const double alpha = g - std::abs(pitch_deg);
+      const double L = c.hd_a_per_deg * alpha * q * l2;
+      const double D = (hd_b * std::pow(q, c.hd_s) + c.hd_c_per_deg2 * alpha * alpha) * q * l2;
+      best = std::min(best, std::hypot(L - 1.5 * std::cos(units::degToRad(g)), D - 1.5 * std::sin(units::degToRad(g))));
+    }
+    EXPECT_LT(best, 2e-3) << pitch_deg;
+  }
+  EXPECT_EQ(seagliderVerticalSpeed(c, 1.5, units::degToRad(-20.0), hd_b), 0.0) << "buoyant but pitched down: stalled";
 }
 
 TEST(GliderSyntheticTruth, NoPumpChannelIsNotIdentifiable) {

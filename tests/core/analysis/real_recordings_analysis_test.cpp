@@ -84,8 +84,17 @@ TEST(RealRecordingsAnalysis, CometErrorsAndWater) {
   EXPECT_GT(r.density_kgm3.mean, 1004.5);
   EXPECT_LT(r.density_kgm3.mean, 1007.0);
   EXPECT_EQ(r.density_source, "log");
-  // At the default target (the operating density) the ballast to add is the net buoyancy.
-  EXPECT_NEAR(r.mass_to_add_g.value, 1000 * r.net_buoyancy_kg.value, 1e-9);
+  // The default target is the water at the bottom of the deepest yo (41 m,
+  // ~5.3 degC, colder and denser than the mean): the fitted hull volume
+  // carried there by V0 (1 - kappa p)(1 + alpha (T - T0)).
+  EXPECT_NEAR(r.target_pressure_dbar, 39.5, 1.5);
+  EXPECT_GT(r.target_density_kgm3, r.density_kgm3.mean);
+  const auto& f = r.details["glider_fit"];
+  const auto& c = f["constants"];
+  const double V = f["hull_volume_m3"].get<double>() * (1 - c["compressibility_per_dbar"].get<double>() * r.target_pressure_dbar) *
+                   (1 + c["thermal_expansion_per_degC"].get<double>() *
+                            (r.target_temperature_degC - c["reference_temperature_degC"].get<double>()));
+  EXPECT_NEAR(r.mass_to_add_g.value, 1000 * (r.target_density_kgm3 * V - 70.0), 1e-6);
   const nlohmann::json j = toJson(r);
   for (const char* k : {"net_buoyancy_kg", "net_buoyancy_sigma_kg", "mass_to_add_g", "mass_to_add_sigma_g"})
     EXPECT_TRUE(j[k].is_number()) << k;

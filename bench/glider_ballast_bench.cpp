@@ -1,0 +1,299 @@
+// Glider ballast end to end (issue 12): the grams to add for a target water
+// deeper and colder than the log's mean, on concealed-effect logs whose
+// flight constants differ from the nominal model the analysis assumes
+// (Cd0 0.10-0.22, lift slope +-7 %, Cd1 +-10 %), several seeds per hidden
+// term and controls; then the real recordings side by side with their
+// published flight-model numbers. Prints:
+//   per log: hidden term, top-1 found, value and truth, mass-to-add error of
+//   the model check's joint answer and of the analysis alone;
+//   summary: top-1, value within 30 %, mean/worst |error|, false terms on controls.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "analysis/glider_target.h"
+#include "analysis/mission_analysis.h"
+#include "discrepancy/glider_ballast_answer.h"
+#include "discrepancy/model_check.h"
+#include "discrepancy/model_check_report.h"
+#include "analysis/analysis_report.h"
+#include "planning/glider_ballast_plan.h"
+#include "common/input_error.h"
+#include "discrepancy/synthetic_glider.h"
+#include "discrepancy/vehicle_check.h"
+#include "missionlog/log_reader.h"
+#include "seawater/seawater.h"
+#include "vehicle/profile_loader.h"
+
+namespace {
+
+using namespace auv;
+using namespace auv::discrepancy;
+
+double meta(const MissionLog& log, const char* key) { return std::stod(*log.metadataValue(key)); }
+
+struct Case {
+  std::string term;  // "" = control
+  double value = 0.0;  // SI (rad for the bias)
+};
+
+struct Outcome {
+  bool top1 = false, within30 = false;
+  int false_terms = 0;
+  double err_joint_g = 0.0, err_analysis_g = 0.0;
+};
+
+Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool deep) {
+  std::mt19937_64 rng(seed * 7777 + 13);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  SyntheticGliderTruth t;
+  t.constants.mass_kg = v.mass_kg;
+  t.constants.reference_temperature_degC = v.hull.reference_temperature_degC;
+  t.constants.thermal_expansion_per_degC = v.hull.thermal_expansion_per_degC;
+  t.constants.compressibility_per_dbar = 0.0;  // the profile says 0: any is a hidden term
+  // Truth flight constants away from the nominal model.
+  t.Cd0 = 0.10 + 0.12 * U(rng);
+  t.constants.lift_slope_per_rad = 7.53 * (0.93 + 0.14 * U(rng));
+  t.constants.induced_drag_per_rad2 = 10.5 * (0.90 + 0.20 * U(rng));
+  t.net_buoyancy_kg = -0.15 + 0.3 * U(rng);
+  if (k.term == "hull_compressibility") t.constants.compressibility_per_dbar = k.value;
+  if (k.term == "thermal_expansion") t.constants.thermal_expansion_per_degC += k.value;
+  if (k.term == "mass_drift") t.mass_drift_kg_per_h = k.value;
+  if (k.term == "pitch_sensor_bias") t.pitch_bias_deg = k.value * 180.0 / M_PI;
+  SyntheticGliderMission m;
+  m.max_depth_m = deep ? 400.0 : 180.0;
+  m.yos = deep ? 6 : 12;
+  m.seed = seed;
+  m.pitch_dive_deg = {-26.0, -18.0, -30.0};
+  m.pitch_climb_deg = {24.0, 17.0, 28.0};
+  m.pump_dive_cm3 = {-250.0, -180.0};
+  m.pump_climb_cm3 = {250.0, 200.0};
+  const MissionLog log = synthesizeGliderLog(t, m);
+
+  // Target: deeper and colder than the log's mean water.
+  analysis::GliderTarget target;
+  target.pressure_dbar = deep ? 600.0 : 300.0;
+  target.temperature_degC = m.deep_temperature_degC - 1.5;
+  target.salinity_psu = m.deep_salinity_psu + 0.05;
+  target.density_kgm3 = seawater::density(target.salinity_psu, target.temperature_degC, target.pressure_dbar);
+  target.basis = "bench";
+  const auto& c = t.constants;
+  const double V0 = meta(log, "truth_hull_volume_m3");
+  const double mEnd = c.mass_kg + t.mass_drift_kg_per_h * (log.time.back() - meta(log, "truth_mass_mid_time_s")) / 3600.0;
+  const double truthAdd = analysis::gliderMassToAddKg(V0, c.compressibility_per_dbar, c.thermal_expansion_per_degC,
+                                                      c.reference_temperature_degC, target, mEnd);
+
+  const auto model = makeCheckModel(log, v, AUV_RESOURCE_DIR);
+  const ModelCheckResult r = runModelCheck(*model);
+  const auto& gm = dynamic_cast<const GliderCheckModel&>(*model);
+  const GliderBallastAnswer a = gliderBallastAnswer(gm, r, target);
+  analysis::AnalysisOptions ao;
+  ao.glider_target.density_kgm3 = target.density_kgm3;
+  ao.glider_target.pressure_dbar = target.pressure_dbar;
+  ao.glider_target.temperature_degC = target.temperature_degC;
+  ao.classic = false;
+  const analysis::AnalysisReport ar = analysis::analyzeMission(log, v, ao);
+
+  Outcome o;
+  std::string found;
+  double fitted = NAN;
+  for (const auto& mp : r.missing_physics) {
+    found += (found.empty() ? "" : ",") + mp.id;
+    if (mp.id == k.term) fitted = mp.value / termLibrary()[*findTerm(mp.id)].display_scale;
+  }
+  if (k.term.empty()) {
+    o.false_terms = static_cast<int>(r.missing_physics.size());
+  } else {
+    o.top1 = !r.missing_physics.empty() && r.missing_physics[0].id == k.term;
+    o.within30 = std::isfinite(fitted) && std::abs(fitted - k.value) <= 0.3 * std::abs(k.value);
+    for (const auto& mp : r.missing_physics)
+      if (mp.id != k.term) ++o.false_terms;
+  }
+  o.err_joint_g = a.mass_to_add_g - 1000 * truthAdd;
+  o.err_analysis_g = ar.mass_to_add_g.value - 1000 * truthAdd;
+  const double scale = k.term == "pitch_sensor_bias" ? 180.0 / M_PI : 1.0;
+  std::printf("%-21s seed %2llu %-7s Cd0 %.3f a %.2f Cd1 %5.2f | found %-40s value %10.3g truth %10.3g | add truth %+7.1f g  "
+              "joint %+6.1f (+-%4.1f)  analysis %+6.1f g\n",
+              k.term.empty() ? "control" : k.term.c_str(), static_cast<unsigned long long>(seed), deep ? "deep" : "shallow",
+              t.Cd0, c.lift_slope_per_rad, c.induced_drag_per_rad2, found.empty() ? "-" : found.c_str(), fitted * scale,
+              k.value * scale, 1000 * truthAdd, o.err_joint_g, a.mass_to_add_sigma_g, o.err_analysis_g);
+  if (std::getenv("GLIDER_BENCH_VERBOSE") && ((!k.term.empty() && !o.top1) || std::abs(o.err_joint_g) > 12)) {
+    for (const auto& cr : r.candidates)
+      std::printf("    candidate %-22s %-50s value %10.3g sigma %9.3g t %6.2f incl %.2f r2 %.3f\n", cr.id.c_str(), cr.status.c_str(),
+                  cr.value, cr.sigma, cr.t_value, cr.inclusion_probability, cr.nuisance_r2);
+    for (const auto& w : r.warnings) std::printf("    warning %s\n", w.c_str());
+  }
+  std::fflush(stdout);
+  return o;
+}
+
+void synthetic(const VehicleProfile& v) {
+  std::puts("(a) concealed-effect glider logs, truth flight constants off nominal; target deeper and colder than the log");
+  std::puts("    errors = answer - truth of the grams to add for neutral at the target (pump at zero, mass at log end)");
+  const std::vector<Case> cases = {{"hull_compressibility", 4e-6}, {"hull_compressibility", 7e-6},
+                                   {"thermal_expansion", 1.0e-4},  {"thermal_expansion", -6e-5},
+                                   {"mass_drift", 0.010},          {"mass_drift", -0.006},
+                                   {"pitch_sensor_bias", 1.5 * M_PI / 180}, {"pitch_sensor_bias", -2.0 * M_PI / 180},
+                                   {"", 0.0}, {"", 0.0}};
+  int effects = 0, top1 = 0, within = 0, controls = 0, falseOnControls = 0, n = 0;
+  double sumJ = 0, worstJ = 0, sumA = 0, worstA = 0;
+  std::uint64_t seed = 1;
+  for (const Case& k : cases) {
+    for (int rep = 0; rep < 2; ++rep, ++seed) {
+      const Outcome o = runCase(v, k, seed, rep == 1);
+      ++n;
+      sumJ += std::abs(o.err_joint_g);
+      worstJ = std::max(worstJ, std::abs(o.err_joint_g));
+      sumA += std::abs(o.err_analysis_g);
+      worstA = std::max(worstA, std::abs(o.err_analysis_g));
+      if (k.term.empty()) {
+        ++controls;
+        falseOnControls += o.false_terms;
+      } else {
+        ++effects;
+        top1 += o.top1;
+        within += o.within30;
+      }
+    }
+  }
+  std::printf("\nSUMMARY (a): %d effect logs, %d controls\n", effects, controls);
+  std::printf("  top-1 right term              %d / %d\n", top1, effects);
+  std::printf("  value within 30 %%             %d / %d (%.0f %%; target >= 90 %%)\n", within, effects, 100.0 * within / effects);
+  std::printf("  false terms on controls       %d (target 0)\n", falseOnControls);
+  std::printf("  mass to add, model check      mean |error| %.1f g, worst %.1f g (targets 5 g, 12 g)\n", sumJ / n, worstJ);
+  std::printf("  mass to add, analysis alone   mean |error| %.1f g, worst %.1f g\n", sumA / n, worstA);
+}
+
+struct RealResult {
+  double Cd0 = NAN, V0 = NAN, nb = NAN, add_analysis = NAN, add_joint = NAN, add_sigma = NAN, rms_start = NAN, rms = NAN;
+  std::size_t samples = 0;
+  std::string found, target;
+  nlohmann::json plan;
+};
+
+RealResult runReal(const std::string& file, const VehicleProfile& v) {
+  RealResult out;
+  ReadReport rr;
+  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(file, ReadOptions{}, rr);
+  analysis::AnalysisOptions ao;
+  ao.classic = false;
+  const analysis::AnalysisReport ar = analysis::analyzeMission(log, v, ao);
+  const nlohmann::json j = analysis::toJson(ar);
+  if (!ar.net_buoyancy_kg.known) {
+    std::printf("  analysis: %s\n", ar.net_buoyancy_kg.why_not.c_str());
+    return out;
+  }
+  const auto& d = ar.details["glider_fit"];
+  out.Cd0 = d["Cd0"].get<double>();
+  out.V0 = d["hull_volume_m3"].get<double>();
+  out.nb = ar.net_buoyancy_kg.value;
+  out.rms_start = d["rms_start_mps"].get<double>();
+  out.rms = d["rms_mps"].get<double>();
+  out.samples = d["samples"].get<std::size_t>();
+  out.add_analysis = ar.mass_to_add_g.value;
+  out.target = auv::analysis::toJson(ar)["target"].dump();
+  const analysis::GliderTarget target{ar.target_density_kgm3, ar.target_pressure_dbar, ar.target_temperature_degC, NAN, ar.target_basis};
+  try {
+    const auto model = makeCheckModel(log, v, AUV_RESOURCE_DIR);
+    const ModelCheckResult r = runModelCheck(*model);
+    for (const auto& mp : r.missing_physics)
+      out.found += (out.found.empty() ? "" : ", ") + mp.id + " " + std::to_string(mp.value) + " " + mp.unit;
+    const GliderBallastAnswer a = gliderBallastAnswer(dynamic_cast<const GliderCheckModel&>(*model), r, target);
+    out.add_joint = a.mass_to_add_g;
+    out.add_sigma = a.mass_to_add_sigma_g;
+    nlohmann::json mj = j;
+    mergeIntoAnalysisJson(mj, r);
+    mergeGliderAnswer(mj, a);
+    out.plan = planGliderBallast(v, {mj, {}, std::nullopt});
+  } catch (const InputError& e) {
+    out.found = std::string("model check not run: ") + e.what();
+  }
+  return out;
+}
+
+VehicleProfile variant(const VehicleProfile& base, double mass_kg, double kappa_per_dbar, double alpha_per_degC,
+                       const nlohmann::json& flight) {
+  VehicleProfile v = base;
+  v.mass_kg = mass_kg;
+  v.hull.compressibility_per_dbar = kappa_per_dbar;
+  v.hull.thermal_expansion_per_degC = alpha_per_degC;
+  v.sections["flight_model"] = flight;
+  return v;
+}
+
+void real(const VehicleProfile& slocum, const VehicleProfile& seaglider) {
+  const std::string dir = std::string(AUV_SHARED_DIR) + "/data/real/";
+  if (!std::filesystem::exists(dir)) {
+    std::printf("(b) real recordings: %s absent, skipped\n", dir.c_str());
+    return;
+  }
+  std::puts("\n(b) real recordings, side by side with the published / shipped flight-model numbers");
+  std::puts("    (ours: steady-glide fit of net buoyancy and the drag parameter, profile mass and volume terms as stated)");
+  auto show = [](const RealResult& r) {
+    std::printf("  ours: samples %zu, drag %.4f, V0 %.6f m3, rms %.2f -> %.2f cm/s, nb %+.3f kg, add at target %+.0f g "
+                "(model check %+.0f +- %.0f g)\n  target %s\n  model check found: %s\n",
+                r.samples, r.Cd0, r.V0, 100 * r.rms_start, 100 * r.rms, r.nb, r.add_analysis, r.add_joint, r.add_sigma,
+                r.target.c_str(), r.found.empty() ? "nothing" : r.found.c_str());
+    if (!r.plan.is_null()) std::printf("%s", gliderPlanText(r.plan).c_str());
+  };
+  {
+    std::puts("comet (Slocum shallow, Baltic): gliderflight steady state with tilt correction x0.86 - 0.004 rad,");
+    std::puts("  reference: Cd0 0.1496, mg 70.103 kg at Vg 0.069721 m3 (1005.47 kg/m3), eps 5e-10 1/Pa, no thermal term");
+    const VehicleProfile v = variant(slocum, 70.103, 5e-6, 0.0,
+                                     {{"pitch_scale", 0.86}, {"pitch_offset_deg", -0.004 * 180 / M_PI}, {"compressibility_per_dbar", 5e-6}});
+    const RealResult r = runReal(dir + "slocum-comet-baltic-2016/comet-2016-174-05.csv", v);
+    show(r);
+    std::printf("  side by side: Cd0 %.4f vs 0.1496; V0 %.6f vs 0.069721 m3 (mass at Vg: %.3f vs 70.103 kg; neutral density "
+                "%.2f vs 1005.47 kg/m3)\n",
+                r.Cd0, r.V0, 70.103 * 0.069721 / r.V0, 70.103 / r.V0);
+  }
+  {
+    std::puts("ammonite (Slocum deep, Ligurian): gliderflight steady state, mg = 60 kg assumed,");
+    std::puts("  reference: Cd0 0.0952, Vg 0.058364 m3 (1028.0 kg/m3), eps 6.26e-10 1/Pa");
+    const VehicleProfile v = variant(slocum, 60.0, 6.26e-6, 0.0, {{"compressibility_per_dbar", 6.26e-6}});
+    const RealResult r = runReal(dir + "slocum-ammonite-ligurian-2008/ammonite-2008-028-01-000.csv", v);
+    show(r);
+    std::printf("  side by side: Cd0 %.4f vs 0.0952; V0 %.6f vs 0.058364 m3 (neutral density %.2f vs 1028.0 kg/m3)\n", r.Cd0, r.V0,
+                60.0 / r.V0);
+  }
+  {
+    std::puts("SG171 (Seaglider, Bay of Bengal, 10 dives to 505 m): bundled seaglider profile (sg_cal_* of dive 100),");
+    std::puts("  reference per dive (flight-constants-per-dive.csv): V0 = volmax + (C_VBD - VBD_MIN) VBD_CNV - vbdbias = "
+              "55266.0 .. 55309.5 cm3 (vbdbias 47.8 .. 4.3), hd_b 0.0224, abs_compress 8.6e-7 .. 1.3e-6");
+    const RealResult r = runReal(dir + "seaglider-sg171-bay-of-bengal-2024/sg171-dives100-109.csv", seaglider);
+    show(r);
+    std::printf("  side by side: hd_b %.4f vs 0.0224; V0 %.1f cm3 vs 55266.0 .. 55309.5 cm3 (vbdbias equivalent %.1f cm3)\n",
+                r.Cd0, r.V0 * 1e6, 55313.8 - r.V0 * 1e6);
+  }
+  {
+    std::puts("SeaExplorer SEA046 (Calvert line, 5 yos to 136 m): no published flight constants; slocum form, mass 59 kg ASSUMED");
+    const VehicleProfile v = variant(slocum, 59.0, 5e-6, 7e-5, nlohmann::json::object());
+    VehicleProfile se = v;
+    se.sections.erase("slocum");
+    se.sections["seaexplorer"] = nlohmann::json::object();
+    const RealResult r = runReal(dir + "seaexplorer-sea046-calvert-2020/sea046-m45-yos10-14.csv", se);
+    show(r);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string res = AUV_RESOURCE_DIR;
+  const VehicleProfile slocum = loadVehicleProfile(res + "/vehicles/slocum_g2.json");
+  const bool onlyReal = argc > 1 && std::string(argv[1]) == "--real";
+  if (argc > 2 && std::string(argv[1]) == "--case") {
+    // One case: --case TERM VALUE SEED deep|shallow (debugging).
+    runCase(slocum, {std::string(argv[2]) == "control" ? "" : argv[2], std::stod(argv[3])}, std::stoull(argv[4]),
+            std::string(argv[5]) == "deep");
+    return 0;
+  }
+  if (!onlyReal) synthetic(slocum);
+  real(slocum, loadVehicleProfile(res + "/vehicles/seaglider.json"));
+  return 0;
+}
