@@ -162,6 +162,8 @@ TEST(RealRecordings, EveryRecordingRoundTripsThroughTheWriter) {
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (entry.path().extension() != ".csv" || entry.path().filename().string().find("constants") != std::string::npos)
       continue;
+    // slocum-binary-samples/oracle/*.values.csv: per-sensor reference decodings, not logs.
+    if (entry.path().parent_path().filename() == "oracle") continue;
     ++n;
     const MissionLog a = readInterchangeCsv(entry.path());
     std::stringstream text;
