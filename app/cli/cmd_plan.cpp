@@ -21,6 +21,7 @@
 #include "number_list.h"
 #include "planning/plan_sources.h"
 #include "planning/pre_mission_plan.h"
+#include "planning/report_consistency.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/vehicle_catalog.h"
 
@@ -113,10 +114,15 @@ int runPlan(const PlanOpts& o) {
         model_terms = m->model.value("accepted", nlohmann::json::array()).size();
       }
     }
+    if (!config && o.accept) {
+      throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "', so --accept has nothing to update",
+                       "create the configuration first: 'auvballast first-mission --weighing FILE.json --config " + o.config +
+                           " --history " + store->path() + "' (or crane flags instead of --weighing), then plan again");
+    }
     if (!config && need_history) {
       throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "'",
-                       "give --installed and --report, or record the configuration first (first-mission or "
-                       "'history --import-ballasting-file')");
+                       "give --installed and --report, or record the configuration first ('auvballast first-mission "
+                       "... --config " + o.config + " --history FILE' or 'history --import-ballasting-file')");
     }
   }
 
@@ -130,6 +136,7 @@ int runPlan(const PlanOpts& o) {
   if (!o.report.empty()) {
     s.report = JsonReader::parseFile(o.report);
     s.report_name = o.report;
+    refuseUnknownReportKeys(s.report, s.report_name);
   } else {
     const auto a = store->latestAnalysis(o.config, nowUtc());
     if (!a) {
@@ -141,6 +148,8 @@ int runPlan(const PlanOpts& o) {
     s.measured_at = a->at;
     s.report_name = "history analysis #" + std::to_string(a->id);
   }
+
+  checkReportMatchesVehicle(s.report, s.report_name, v);
 
   // An analysis without a physical estimate (e.g. imported from a thesis
   // ballasting file) still carries the deviations the classic table reads;

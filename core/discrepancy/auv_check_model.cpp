@@ -131,8 +131,11 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
     g.th_front = tf.value.empty() ? 0.0 : tf.value[i];
     g.th_aft = ta.value.empty() ? 0.0 : ta.value[i];
     g.T = T.empty() || std::isnan(T[i]) ? v.hull.reference_temperature_degC : T[i];
+    // Across a logger drop-out the resampled depth is NaN: no pressure there,
+    // and the grid point is left out below (g.valid) instead of failing the log.
     g.p = !pC.empty() && std::isfinite(pC[i]) ? pC[i]
-                                               : seawater::pressureFromDepth(std::clamp(zRaw[i], 0.0, 10600.0), latitude_);
+          : std::isfinite(zRaw[i])            ? seawater::pressureFromDepth(std::clamp(zRaw[i], 0.0, 10600.0), latitude_)
+                                              : kNaN;
     g.rho = !rhoC.empty() && std::isfinite(rhoC[i]) ? rhoC[i] : kNaN;
     if (std::isnan(g.rho) && !T.empty() && !S.empty() && std::isfinite(T[i]) && std::isfinite(S[i])) {
       try {

@@ -20,6 +20,13 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
   // Reading the header first: a foreign file or a newer schema is refused
   // before the WAL switch below could write anything to it.
   requireNotNewer(db, steps);
+  // A damaged page must not be written over (nor the damage spread by a
+  // migration): read what can be read, refuse every save (Transaction).
+  const std::string quick = quickCheck();
+  if (quick != "ok") {
+    db.refuseWrites(quick.substr(0, 300));
+    return;
+  }
   // WAL: a save appends to the -wal file and the main file changes only at
   // checkpoints, so a killed writer cannot leave a torn main file and readers
   // (the GUI) never block the writer.
@@ -37,6 +44,22 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
 }
 
 int HistoryStore::schemaVersion() { return schemaVersionOf(*db_); }
+
+std::string HistoryStore::quickCheck() {
+  // SQLITE_CORRUPT while checking is itself the answer.
+  try {
+    auto st = db_->prepare("PRAGMA quick_check");
+    std::string all;
+    while (st.step()) {
+      if (!all.empty()) all += "; ";
+      all += st.text(0);
+    }
+    return all;
+  } catch (const InputError& e) {
+    if (e.problem().find("damaged") == std::string::npos) throw;
+    return e.problem();
+  }
+}
 
 std::string HistoryStore::integrityCheck() {
   auto st = db_->prepare("PRAGMA integrity_check");
