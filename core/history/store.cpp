@@ -25,6 +25,14 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
   const std::string quick = quickCheck();
   if (quick != "ok") {
     db.refuseWrites(quick.substr(0, 300));
+    // Only a file already at the current schema can be read as it is; one that
+    // would need an upgrade cannot be upgraded without writing to it.
+    const int known = steps.empty() ? 0 : steps.back().version;
+    if (schemaVersionOf(db) != known) {
+      throw InputError("history database", "'" + path() + "' is damaged (" + quick.substr(0, 300) + ")",
+                       "restore the automatic backup: move '" + path() + "' aside and copy '" + db.backupPath() +
+                           "' to '" + path() + "'");
+    }
     return;
   }
   // WAL: a save appends to the -wal file and the main file changes only at
