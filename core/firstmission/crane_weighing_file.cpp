@@ -4,8 +4,9 @@
 
 namespace auv {
 
-CraneWeighingFile loadCraneWeighingFile(const std::string& file) {
-  const nlohmann::json doc = JsonReader::parseFile(file);
+namespace {
+
+CraneWeighingFile fromJson(const nlohmann::json& doc, const std::string& file) {
   const JsonReader root(doc, file);
   constexpr std::string_view kDoc = "docs/formats/crane-weighing.md";
   root.refuseUnknownKeys({"method", "vehicle", "comment", "scales_kg", "total_kg", "rope_x_m", "rope_y_m", "installed_kg",
@@ -38,6 +39,14 @@ CraneWeighingFile loadCraneWeighingFile(const std::string& file) {
     out.input.use_optional_pieces = flag.get<bool>();
   }
   return out;
+}
+
+}  // namespace
+
+CraneWeighingFile loadCraneWeighingFile(const std::string& file) { return fromJson(JsonReader::parseFile(file), file); }
+
+CraneWeighingFile parseCraneWeighingFile(const std::string& json_text, const std::string& file) {
+  return fromJson(JsonReader::parseText(json_text, file), file);
 }
 
 }  // namespace auv
