@@ -149,8 +149,6 @@ int runPlan(const PlanOpts& o) {
     s.report_name = "history analysis #" + std::to_string(a->id);
   }
 
-  checkReportMatchesVehicle(s.report, s.report_name, v);
-
   // An analysis without a physical estimate (e.g. imported from a thesis
   // ballasting file) still carries the deviations the classic table reads;
   // the mass then comes from the recorded total weight, as in the thesis.

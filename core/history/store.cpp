@@ -53,10 +53,12 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
 
 int HistoryStore::schemaVersion() { return schemaVersionOf(*db_); }
 
-std::string HistoryStore::quickCheck() {
-  // SQLITE_CORRUPT while checking is itself the answer.
+namespace {
+// "ok" or the problems a check pragma lists; SQLITE_CORRUPT while checking is
+// itself the answer.
+std::string runCheck(Database& db, const char* pragma) {
   try {
-    auto st = db_->prepare("PRAGMA quick_check");
+    auto st = db.prepare(pragma);
     std::string all;
     while (st.step()) {
       if (!all.empty()) all += "; ";
@@ -68,16 +70,11 @@ std::string HistoryStore::quickCheck() {
     return e.problem();
   }
 }
+}  // namespace
 
-std::string HistoryStore::integrityCheck() {
-  auto st = db_->prepare("PRAGMA integrity_check");
-  std::string all;
-  while (st.step()) {
-    if (!all.empty()) all += "\n";
-    all += st.text(0);
-  }
-  return all;
-}
+std::string HistoryStore::quickCheck() { return runCheck(*db_, "PRAGMA quick_check"); }
+
+std::string HistoryStore::integrityCheck() { return runCheck(*db_, "PRAGMA integrity_check"); }
 
 RecordId HistoryStore::configRow(const std::string& config_id) {
   auto st = db_->prepare("SELECT id FROM configurations WHERE config_id = ?1");

@@ -23,7 +23,6 @@
 #include "missionlog/iso8601.h"
 #include "missionlog/log_table.h"
 #include "missionlog/text_lines.h"
-#include "missionlog/unit_conversion.h"
 
 namespace auv {
 namespace {
@@ -202,8 +201,10 @@ void Parser::checkAttitudeUnits(std::vector<detail::InterchangeColumn>& cols, st
       }
   }
   for (std::size_t c = 0; c < cols.size(); ++c) {
-    if (c == timeCol || cols[c].ignored) continue;
-    const std::string base(baseChannelName(cols[c].name));
+    // The measured attitude the analysis uses; commands (pitch_cmd) and
+    // model outputs are extra channels whose values the reader keeps as given.
+    if (c == timeCol || cols[c].ignored || (cols[c].name != "pitch" && cols[c].name != "roll")) continue;
+    const std::string base = cols[c].name;
     const detail::AttitudeCheck a = detail::checkAttitudeDeg(base, data[c]);
     if (a.limit_deg == 0.0) continue;
     const std::string declared = "[" + (cols[c].source_unit.empty() ? cols[c].unit : cols[c].source_unit) + "]";
