@@ -2,6 +2,7 @@
 # Builds the libFuzzer targets with clang (ASan + UBSan) in ./build-fuzz and
 # runs each for a bounded time on its seed corpus. Usage:
 #   scripts/fuzz.sh [seconds per target, default 30]
+#   FUZZ_TARGETS="fuzz_json_inputs" FUZZ_MAX_LEN=1048576 scripts/fuzz.sh 60
 # Exits non-zero on a crash, sanitizer report or broken invariant; the
 # reproducer is left in build-fuzz/artifacts/.
 #
@@ -29,7 +30,10 @@ CORPORA=(tests/data/missionlog/corpus tests/data/missionlog/corpus-delimited tes
          tests/data/missionlog/corpus-netcdf tests/fuzz/corpus-json)
 DICTS=(tests/fuzz/dict/interchange.dict tests/fuzz/dict/delimited.dict tests/fuzz/dict/delimited.dict
        "" tests/fuzz/dict/json.dict)
-cmake --build build-fuzz --target "${TARGETS[@]}" -j"$(nproc)"
+# FUZZ_TARGETS="fuzz_json_inputs fuzz_interchange_csv" runs only those.
+SELECTED=("${TARGETS[@]}")
+[ -n "${FUZZ_TARGETS:-}" ] && read -r -a SELECTED <<< "$FUZZ_TARGETS"
+cmake --build build-fuzz --target "${SELECTED[@]}" -j"$(nproc)"
 mkdir -p build-fuzz/artifacts
 
 # Generated large seeds (not committed: they are big and cheap to make).
@@ -71,6 +75,7 @@ PY
 
 for i in "${!TARGETS[@]}"; do
   t="${TARGETS[$i]}"
+  [[ " ${SELECTED[*]} " == *" $t "* ]] || continue
   exe="$(find build-fuzz -type f -name "$t" -perm -u+x | head -n1)"
   work="build-fuzz/corpus-$t"
   mkdir -p "$work"
