@@ -2,7 +2,6 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <set>
 
 #include "common/input_error.h"
 #include "missionlog/unit_conversion.h"
