@@ -3,6 +3,7 @@
 // resources are and how to write results. Keeps the command files free of
 // environment lookups.
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,8 @@
 #include "missionlog/read_report.h"
 
 #include "missionlog/read_options.h"
+
+#include "common/input_error.h"
 
 namespace auv::cli {
 
@@ -31,5 +34,21 @@ inline constexpr const char* kCacheDirHelp =
 MissionLog readLogArgument(const std::vector<std::string>& logs, const ReadOptions& options, ReadReport& report);
 // The name of the log(s) in reports: "p1710100.nc", "raw", "a.dbd and 1 more".
 std::string logArgumentLabel(const std::vector<std::string>& logs);
+
+// Runs `f`, a computation on the content of `file` (a log, a weighing file).
+// Its refusals about that content ("no usable depth channel") carry no file;
+// they are given `file` so every refusal names its file. Refusals about flags
+// keep naming the flag.
+template <class F>
+auto aboutFile(const std::string& file, F&& f) -> decltype(f()) {
+  static const std::set<std::string> flags = {"installed", "bg-mm", "target-density", "coefficient-sigma", "drive",
+                                              "config", "terms", "min-depth", "cg-y-sigma-mm", "dt_s"};
+  try {
+    return f();
+  } catch (const InputError& e) {
+    if (!e.where().file.empty() || flags.count(e.field())) throw;
+    throw InputError(e.field(), e.problem(), e.fix(), {file, 0, 0});
+  }
+}
 
 }  // namespace auv::cli

@@ -56,7 +56,7 @@ int runAnalyze(const AnalyzeOpts& o) {
 
   ReadReport readReport;
   const MissionLog log = readLogArgument(o.log, logReadOptions(o.cache_dir), readReport);
-  analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
+  analysis::AnalysisReport r = aboutFile(logArgumentLabel(o.log), [&] { return analysis::analyzeMission(log, v, a); });
   if (!readReport.clean()) {
     r.warnings.insert(r.warnings.begin(), "the log had problems on import (" + std::to_string(readReport.totalProblems()) +
                                               "); see the import summary");

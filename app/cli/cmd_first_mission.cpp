@@ -1,5 +1,6 @@
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli_context.h"
 #include "commands.h"
@@ -7,9 +8,14 @@
 #include "firstmission/crane_weighing_file.h"
 #include "firstmission/hugin_first_mission.h"
 #include "firstmission/slocum_first_mission.h"
+#include "history/configuration_id.h"
+#include "history/store.h"
+#include "history/timestamp.h"
+#include "history/transaction.h"
 #include "weighing/tank_weighing_file.h"
 #include "number_list.h"
 #include "vehicle/vehicle_catalog.h"
+#include "vehicle/installed_check.h"
 #include "vehicle/json_reader.h"
 
 namespace auv::cli {
@@ -17,8 +23,16 @@ namespace {
 
 struct FirstMissionOpts {
   std::string vehicle, scales, total, rope_x, rope_y, installed, temperature, salinity, depth = "0",
-      latitude = "45", json, policy = "exact", weighing;
+      latitude = "45", json, policy = "exact", weighing, config, history;
   bool optional_pieces = false;
+};
+
+// What a run computed plus what the history records about it.
+struct FirstMissionRun {
+  FirstMissionReport report;
+  VehicleProfile vehicle;
+  nlohmann::json inputs;              // the weighing as given (file or flags)
+  std::vector<double> installed_kg;   // on the vehicle while it was weighed (crane)
 };
 
 PlannedWater plannedWater(const FirstMissionOpts& o) {
@@ -67,12 +81,20 @@ FirstMissionReport runCrane(const VehicleProfile& v, const FirstMissionOpts& o) 
   return craneFirstMission(v, in);
 }
 
-FirstMissionReport runCraneFlags(const FirstMissionOpts& o) {
+FirstMissionRun runCraneFlags(const FirstMissionOpts& o) {
   if (o.vehicle.empty()) throw InputError("vehicle", "missing", "give --vehicle ID (see 'auvballast vehicles')");
-  return runCrane(VehicleCatalog(vehiclesDir()).load(o.vehicle), o);
+  // Members set one by one: GCC 12 destroys an aggregate's members twice when
+  // an initializer throws (the profile loader's InputError).
+  FirstMissionRun run;
+  run.vehicle = VehicleCatalog(vehiclesDir()).load(o.vehicle);
+  run.report = runCrane(run.vehicle, o);
+  run.inputs = {{"method", "crane"}, {"vehicle", run.vehicle.id}, {"scales_kg", o.scales}, {"total_kg", o.total},
+                {"rope_x_m", o.rope_x}, {"installed_kg", o.installed}, {"source", "command line"}};
+  if (!o.installed.empty()) run.installed_kg = parseNumberList(o.installed, run.vehicle.points.size(), "installed", "kg");
+  return run;
 }
 
-FirstMissionReport runWeighingFile(const FirstMissionOpts& o) {
+FirstMissionRun runWeighingFile(const FirstMissionOpts& o) {
   const nlohmann::json doc = JsonReader::parseFile(o.weighing);
   const std::string method = JsonReader(doc, o.weighing).text("method");
   const std::string vehicle = JsonReader(doc, o.weighing).text("vehicle");
@@ -80,16 +102,81 @@ FirstMissionReport runWeighingFile(const FirstMissionOpts& o) {
     throw InputError("vehicle", "--vehicle " + o.vehicle + " but the weighing file is for " + vehicle,
                      "drop --vehicle or use the matching weighing file");
   }
-  const VehicleProfile v = VehicleCatalog(vehiclesDir()).load(vehicle);
+  FirstMissionRun run;
+  run.vehicle = aboutFile(o.weighing, [&] { return VehicleCatalog(vehiclesDir()).load(vehicle); });
+  run.inputs = doc;
+  const VehicleProfile& v = run.vehicle;
   if (method == "crane") {
     CraneWeighingFile f = loadCraneWeighingFile(o.weighing);
+    if (!f.input.installed_kg.empty()) checkInstalledKg(v, f.input.installed_kg, "installed_kg", {o.weighing, 0, 0});
     if (!o.policy.empty()) f.input.policy = parsePolicy(o.policy);
     if (o.optional_pieces) f.input.use_optional_pieces = true;
-    return craneFirstMission(v, f.input);
+    run.installed_kg = f.input.installed_kg;
+    run.report = aboutFile(o.weighing, [&] { return craneFirstMission(v, f.input); });
+    return run;
   }
-  if (method == "tank") return slocumFirstMission(v, loadTankWeighing(o.weighing));
+  if (method == "tank") {
+    const TankWeighing tank = loadTankWeighing(o.weighing);
+    run.report = aboutFile(o.weighing, [&] { return slocumFirstMission(v, tank); });
+    return run;
+  }
   throw InputError("method", "weighing method '" + method + "' is not supported",
                    "use \"crane\" (or \"tank\" for gliders)", {o.weighing, 0, 0});
+}
+
+// Creates the configuration (refused if the ID exists) and records the
+// weighing, its water, the recommendation and the pieces on the vehicle while
+// it was weighed, in one transaction, as the wizard's first-mission save does;
+// `plan --config ID` starts from these records.
+void saveToHistory(const FirstMissionOpts& o, const FirstMissionRun& run) {
+  HistoryStore store(historyPath(o.history));
+  const TimePoint now = nowUtc();
+  const FirstMissionReport& r = run.report;
+  Transaction tx(store.database());
+  if (store.configuration(o.config)) {
+    throw InputError("config", "'" + o.config + "' already exists in the history '" + store.path() + "'",
+                     "choose a new configuration ID (thesis xx-xx-xx); see 'auvballast history --config " + o.config + "'");
+  }
+  Configuration c;
+  c.config_id = o.config;
+  c.vehicle_key = run.vehicle.id;
+  c.vehicle_name = run.vehicle.name;
+  c.created_at = now;
+  store.addConfiguration(c);
+  Weighing w;
+  w.at = now;
+  w.method = r.method == "tank" ? WeighingMethod::kTank : WeighingMethod::kCrane;
+  w.inputs = run.inputs;
+  w.results = toJson(r);
+  store.addWeighing(o.config, w);
+  WaterCondition water;
+  water.measured_at = now;
+  water.temperature_degC = r.temperature_degC;
+  water.salinity_psu = r.salinity_psu;
+  water.depth_m = r.depth_m;
+  water.density_kg_m3 = r.density_kgm3;
+  water.source = "operator";
+  store.addWaterCondition(o.config, water);
+  Recommendation rec;
+  rec.at = now;
+  rec.policy = r.method == "tank" ? "tank" : o.policy;
+  rec.recommendation = toJson(r);
+  const RecordId rid = store.addRecommendation(o.config, rec);
+  if (r.method == "crane") {
+    InstalledState st;
+    st.installed_at = now;
+    st.recommendation_id = rid;
+    for (std::size_t i = 0; i < run.vehicle.points.size(); ++i) {
+      st.points.push_back({run.vehicle.points[i].name, i < run.installed_kg.size() ? run.installed_kg[i] : 0.0, {}});
+    }
+    st.total_mass_kg = r.weight_kg;
+    st.note = "as weighed (first mission)";
+    store.addInstalledState(o.config, st);
+  }
+  tx.commit();
+  std::cerr << "Recorded configuration " << o.config << " in " << store.path()
+            << " (weighing, water, recommendation" << (r.method == "crane" ? ", installed pieces as weighed" : "")
+            << ")\n";
 }
 
 }  // namespace
@@ -116,10 +203,22 @@ Command addFirstMissionCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--optional-pieces", o->optional_pieces, "Also use the kit's optional pieces (HUGIN: 0.5 kg)");
   cmd->add_option("--json", o->json, "Write the JSON report here ('-' = stdout instead of text)");
+  cmd->add_option("--config", o->config,
+                  "Create this configuration (thesis xx-xx-xx) in the history and record the weighing, water, "
+                  "recommendation and installed pieces, so 'plan --config' can start from it");
+  cmd->add_option("--history", o->history,
+                  "History database for --config (default: $AUVBALLAST_HISTORY, else "
+                  "$XDG_DATA_HOME/auvballast/history.sqlite)");
   return {cmd, [o]() {
-            const FirstMissionReport r = o->weighing.empty() ? runCraneFlags(*o) : runWeighingFile(*o);
-            if (!o->json.empty()) writeJson(toJson(r), o->json);
-            if (o->json != "-") std::cout << toText(r);
+            if (!o->config.empty()) requireValidConfigurationId(o->config);
+            if (o->config.empty() && !o->history.empty()) {
+              throw InputError("history", "--history without --config records nothing",
+                               "add --config ID to create that configuration in the history");
+            }
+            const FirstMissionRun run = o->weighing.empty() ? runCraneFlags(*o) : runWeighingFile(*o);
+            if (!o->config.empty()) saveToHistory(*o, run);
+            if (!o->json.empty()) writeJson(toJson(run.report), o->json);
+            if (o->json != "-") std::cout << toText(run.report);
             return 0;
           }};
 }

@@ -42,7 +42,21 @@ namespace {
 
 struct HistoryOpts {
   std::string config, history, json, csv, import_file, export_file;
+  bool check = false;
 };
+
+// `history --check`: the full integrity check, with the restore instructions.
+int runCheck(HistoryStore& store) {
+  const std::string result = store.integrityCheck();
+  if (result == "ok") {
+    std::cout << store.path() << ": integrity check ok; backup of the last save: " << store.database().backupPath()
+              << (fs::exists(store.database().backupPath()) ? "" : " (none yet)") << "\n";
+    return 0;
+  }
+  throw InputError("history database", "'" + store.path() + "' is damaged: " + result.substr(0, 400),
+                   "restore the automatic backup: move '" + store.path() + "' aside and copy '" +
+                       store.database().backupPath() + "' to '" + store.path() + "'");
+}
 
 std::string pointsText(const std::vector<InstalledPoint>& pts) {
   std::string s;
@@ -119,11 +133,20 @@ void writeText(const std::string& text, const std::string& path, const std::stri
 }
 
 int runHistory(const HistoryOpts& o) {
+  if (o.check) {
+    HistoryStore store(historyPath(o.history));
+    return runCheck(store);
+  }
   if (o.import_file.empty() && o.config.empty()) {
     throw InputError("config", "missing", "give --config ID (thesis xx-xx-xx), or --import-ballasting-file FILE");
   }
   if (!o.config.empty()) requireValidConfigurationId(o.config);
   HistoryStore store(historyPath(o.history));
+  if (!store.damage().empty()) {
+    std::cerr << "WARNING: " << store.path() << " is damaged (" << store.damage()
+              << "); it is listed read-only and saves are refused. Restore the backup " << store.database().backupPath()
+              << " (see 'auvballast history --check')\n";
+  }
   if (!o.import_file.empty()) {
     const BallastingFile file = readBallastingFile(o.import_file);
     const BallastingImport r = importBallastingFile(store, file, o.import_file);
@@ -162,6 +185,8 @@ Command addHistoryCommand(CLI::App& app) {
   cmd->add_option("--import-ballasting-file", o->import_file,
                   "Import a thesis 'ballasting' file (docs/formats/thesis-ballasting-file.md), all or nothing");
   cmd->add_option("--export-ballasting-file", o->export_file, "Write the configuration as a thesis 'ballasting' file");
+  cmd->add_flag("--check", o->check,
+                "Run SQLite's full integrity check on the history file (exit 2 with the restore instructions if damaged)");
   return {cmd, [o]() { return runHistory(*o); }};
 }
 

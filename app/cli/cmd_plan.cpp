@@ -23,6 +23,7 @@
 #include "planning/glider_ballast_plan.h"
 #include "planning/plan_sources.h"
 #include "planning/pre_mission_plan.h"
+#include "planning/report_consistency.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/vehicle_catalog.h"
 
@@ -136,10 +137,15 @@ int runPlan(const PlanOpts& o) {
         model_terms = m->model.value("accepted", nlohmann::json::array()).size();
       }
     }
+    if (!config && o.accept) {
+      throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "', so --accept has nothing to update",
+                       "create the configuration first: 'auvballast first-mission --weighing FILE.json --config " + o.config +
+                           " --history " + store->path() + "' (or crane flags instead of --weighing), then plan again");
+    }
     if (!config && need_history) {
       throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "'",
-                       "give --installed and --report, or record the configuration first (first-mission or "
-                       "'history --import-ballasting-file')");
+                       "give --installed and --report, or record the configuration first ('auvballast first-mission "
+                       "... --config " + o.config + " --history FILE' or 'history --import-ballasting-file')");
     }
   }
 
@@ -153,6 +159,7 @@ int runPlan(const PlanOpts& o) {
   if (!o.report.empty()) {
     s.report = JsonReader::parseFile(o.report);
     s.report_name = o.report;
+    refuseUnknownReportKeys(s.report, s.report_name);
   } else {
     const auto a = store->latestAnalysis(o.config, nowUtc());
     if (!a) {

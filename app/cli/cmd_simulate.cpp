@@ -163,7 +163,7 @@ int runReplay(const SimulateOpts& o) {
   const WaterColumn water = o.env.empty() ? sim::waterColumnFromLog(log) : envWater(o.env);
   const sim::ReplayDrive drive = sim::resolveReplayDrive(sv.model, log, ro.drive);
   ro.drive = drive;
-  const SimTrace tr = sim::replay(sv.model, sv.autopilot, water, log, ro);
+  const SimTrace tr = aboutFile(replayName, [&] { return sim::replay(sv.model, sv.autopilot, water, log, ro); });
   sim::SimLogInfo info{v.id, "replay", replayName, 0, sv.model.thruster_count, installed,
                        {{"replay_drive", sim::replayDriveName(drive)}}};
   sim::writeSimulatedLog(tr, info, o.out);

@@ -15,6 +15,7 @@
 #include "common/units.h"
 #include "seawater/seawater.h"
 #include "vehicle/json_reader.h"
+#include "vehicle/installed_check.h"
 
 namespace auv::analysis {
 
@@ -226,10 +227,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
   rep.rows = log.rowCount();
   rep.duration_s = log.duration();
   const bool glider = v.kind == "glider";
-  if (!o.installed_kg.empty() && o.installed_kg.size() != v.points.size())
-    throw InputError("installed", "has " + std::to_string(o.installed_kg.size()) + " values but the profile '" + v.id +
-                                      "' has " + std::to_string(v.points.size()) + " adjustment points",
-                     "give one kg value per adjustment point, in profile order");
+  if (!o.installed_kg.empty()) checkInstalledKg(v, o.installed_kg, "installed");
   const double latitude = latitudeFromMetadata(log).value_or(seawater::kDefaultLatitude_deg);
 
   SegmentOptions so = o.segments;

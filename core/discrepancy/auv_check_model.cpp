@@ -54,15 +54,30 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
   // Uniform grid.
   const TimeSeries pitchS = log.series("pitch");
   double dt = o.row_interval_s > 0 ? o.row_interval_s : std::max(0.2, analysis::medianInterval(pitchS.t));
-  const double span = log.time.back() - log.time.front();
+  // The recorded span without its logger drop-outs: a gap of days must not
+  // coarsen the grid (nor fill it with empty points).
+  const std::vector<double>& rowT = log.time;
+  double span = 0.0;
+  for (std::size_t i = 1; i < rowT.size(); ++i) span += std::min(rowT[i] - rowT[i - 1], std::max(5.0, 5.0 * dt));
   dt = std::max(dt, span / static_cast<double>(std::max<std::size_t>(100, o.max_rows)));
   dt_ = dt;
-  std::vector<double> grid;
-  for (double t = log.time.front(); t <= log.time.back() + 1e-9; t += dt) grid.push_back(t);
-  gridT_ = grid;
-  const std::size_t G = grid.size();
   const double gap = std::max(5.0, 5.0 * dt);
   const int half = std::max(2, static_cast<int>(std::lround(o.state_half_window_s / dt)));
+  // Uniform at dt over the recorded stretches; across a gap longer than `gap`
+  // only a few points are kept (every channel is NaN there), so the fits on
+  // either side never meet and the grid follows the rows.
+  std::vector<double> grid;
+  std::size_t row = 0;
+  for (double t = rowT.front(); t <= rowT.back() + 1e-9;) {
+    grid.push_back(t);
+    double next = t + dt;
+    while (row + 1 < rowT.size() && rowT[row + 1] <= next) ++row;
+    if (row + 1 < rowT.size() && rowT[row + 1] - rowT[row] > gap && next > rowT[row] + gap)
+      next = std::max(next, rowT[row + 1] - static_cast<double>(half + 2) * dt);
+    t = next;
+  }
+  gridT_ = grid;
+  const std::size_t G = grid.size();
   k_ = std::max(1, static_cast<int>(std::lround(o.integral_half_window_s / dt)));
   auto smooth = [&](const char* name, double scale) {
     std::vector<double> y = channelAt(log, name, grid, false, gap);
@@ -131,8 +146,11 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
     g.th_front = tf.value.empty() ? 0.0 : tf.value[i];
     g.th_aft = ta.value.empty() ? 0.0 : ta.value[i];
     g.T = T.empty() || std::isnan(T[i]) ? v.hull.reference_temperature_degC : T[i];
+    // Across a logger drop-out the resampled depth is NaN: no pressure there,
+    // and the grid point is left out below (g.valid) instead of failing the log.
     g.p = !pC.empty() && std::isfinite(pC[i]) ? pC[i]
-                                               : seawater::pressureFromDepth(std::clamp(zRaw[i], 0.0, 10600.0), latitude_);
+          : std::isfinite(zRaw[i])            ? seawater::pressureFromDepth(std::clamp(zRaw[i], 0.0, 10600.0), latitude_)
+                                              : kNaN;
     g.rho = !rhoC.empty() && std::isfinite(rhoC[i]) ? rhoC[i] : kNaN;
     if (std::isnan(g.rho) && !T.empty() && !S.empty() && std::isfinite(T[i]) && std::isfinite(S[i])) {
       try {

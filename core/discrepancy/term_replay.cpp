@@ -51,10 +51,11 @@ sim::VehicleModel adjustedModel(const sim::VehicleModel& model, const SimAdjustm
   return m;
 }
 
-TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopilotConfig& apcfg,
-                           const sim::WaterColumn& water, const MissionLog& log, const SimAdjustment& a,
-                           std::span<const double> times, const TermReplayOptions& opt) {
-  if (log.rowCount() < 2) throw InputError("time", "the log has fewer than two rows", "replay a longer log");
+namespace {
+
+TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAutopilotConfig& apcfg,
+                              const sim::WaterColumn& water, const MissionLog& log, const SimAdjustment& a,
+                              std::span<const double> times, const TermReplayOptions& opt) {
   const sim::VehicleModel model = adjustedModel(base, a);
   const sim::ReplayDrive drive = sim::resolveReplayDrive(model, log, opt.drive);
   const double dt = opt.dt_s;
@@ -145,6 +146,71 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
       eng.step(W, demand, 0.0);
     }
     eng.state()[sim::kZ] -= a.vertical_current_mps * dt;
+  }
+  return tr;
+}
+
+// Rows [r0, r1) of `log`, every channel.
+MissionLog sliceRows(const MissionLog& log, std::size_t r0, std::size_t r1) {
+  MissionLog out;
+  out.metadata = log.metadata;
+  out.time.assign(log.time.begin() + static_cast<long>(r0), log.time.begin() + static_cast<long>(r1));
+  for (const LogChannel& c : log.channels) {
+    LogChannel k;
+    k.name = c.name;
+    k.unit = c.unit;
+    k.source_unit = c.source_unit;
+    k.values.assign(c.values.begin() + static_cast<long>(r0), c.values.begin() + static_cast<long>(r1));
+    out.channels.push_back(std::move(k));
+  }
+  return out;
+}
+
+}  // namespace
+
+// A logger drop-out longer than 20 row spacings (at least 30 s) ends a span
+// and the replay restarts from the first row after it, as sim::replay does:
+// steps, memory and time follow the rows, not a gap of days. Requested times
+// inside a gap stay NaN.
+TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopilotConfig& apcfg,
+                           const sim::WaterColumn& water, const MissionLog& log, const SimAdjustment& a,
+                           std::span<const double> times, const TermReplayOptions& opt) {
+  if (log.rowCount() < 2) throw InputError("time", "the log has fewer than two rows", "replay a longer log");
+  const std::vector<double>& T = log.time;
+  std::vector<double> d;
+  for (std::size_t i = 1; i < T.size(); ++i) d.push_back(T[i] - T[i - 1]);
+  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+  const double gap_s = std::max(30.0, 20.0 * d[d.size() / 2]);
+  std::vector<std::pair<std::size_t, std::size_t>> spans;
+  for (std::size_t r0 = 0; r0 < T.size();) {
+    std::size_t r1 = r0 + 1;
+    while (r1 < T.size() && T[r1] - T[r1 - 1] <= gap_s) ++r1;
+    spans.push_back({r0, r1});
+    r0 = r1;
+  }
+  if (spans.size() == 1) return replayOneSpan(base, apcfg, water, log, a, times, opt);
+
+  TermReplayTrace tr;
+  for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps}) v->assign(times.size(), kNaN);
+  for (const auto& [r0, r1] : spans) {
+    if (r1 - r0 < 2) continue;  // a lone row between gaps: nothing to fly
+    std::vector<double> sub;
+    std::vector<std::size_t> at;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      if (times[i] >= T[r0] && times[i] <= T[r1 - 1]) {
+        sub.push_back(times[i]);
+        at.push_back(i);
+      }
+    }
+    if (sub.empty()) continue;
+    const TermReplayTrace part = replayOneSpan(base, apcfg, water, sliceRows(log, r0, r1), a, sub, opt);
+    for (std::size_t j = 0; j < at.size(); ++j) {
+      tr.depth_m[at[j]] = part.depth_m[j];
+      tr.pitch_rad[at[j]] = part.pitch_rad[j];
+      tr.roll_rad[at[j]] = part.roll_rad[j];
+      tr.speed_mps[at[j]] = part.speed_mps[j];
+      tr.vertical_velocity_mps[at[j]] = part.vertical_velocity_mps[j];
+    }
   }
   return tr;
 }

@@ -14,5 +14,7 @@ struct CraneWeighingFile {
 
 // Throws InputError naming the file and JSON path of a bad field.
 CraneWeighingFile loadCraneWeighingFile(const std::string& file);
+// The same from text (`file` names it in messages); for the GUI and fuzzing.
+CraneWeighingFile parseCraneWeighingFile(const std::string& json_text, const std::string& file);
 
 }  // namespace auv

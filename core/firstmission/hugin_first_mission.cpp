@@ -9,6 +9,7 @@
 #include "common/input_error.h"
 #include "common/units.h"
 #include "hydrostatics/balance.h"
+#include "vehicle/installed_check.h"
 
 namespace auv {
 namespace {
@@ -72,11 +73,7 @@ FirstMissionReport craneFirstMission(const VehicleProfile& vehicle, CraneFirstMi
     throw InputError("vehicle", "profile '" + vehicle.id + "' has no adjustment points",
                      "add adjustment_points to the vehicle profile");
   }
-  if (!in.installed_kg.empty() && in.installed_kg.size() != vehicle.points.size()) {
-    throw InputError("installed", "expected " + std::to_string(vehicle.points.size()) + " values, got " +
-                                      std::to_string(in.installed_kg.size()),
-                     "give one installed mass per adjustment point, in profile order");
-  }
+  if (!in.installed_kg.empty()) checkInstalledKg(vehicle, in.installed_kg, "installed");
   in.weighing.cg_z_m = vehicle.cb_m.z() + vehicle.bg_m;
   const CraneResult crane = weighCrane(in.weighing);
   const WaterState water = resolveWater(in.water);

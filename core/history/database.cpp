@@ -59,6 +59,24 @@ Database::Database(std::string path) : path_(std::move(path)) {
 
 Database::~Database() { sqlite3_close_v2(db_); }
 
+bool Database::refreshBackup() {
+  // Into a temporary file, then renamed: a writer killed mid-copy leaves the
+  // previous backup whole.
+  const std::string tmp = backupPath() + ".tmp";
+  sqlite3* dest = nullptr;
+  bool ok = sqlite3_open_v2(tmp.c_str(), &dest, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) == SQLITE_OK;
+  if (ok) {
+    sqlite3_backup* b = sqlite3_backup_init(dest, "main", db_, "main");
+    ok = b != nullptr && sqlite3_backup_step(b, -1) == SQLITE_DONE;
+    ok = sqlite3_backup_finish(b) == SQLITE_OK && ok;
+  }
+  sqlite3_close_v2(dest);
+  std::error_code ec;
+  if (ok) fs::rename(tmp, backupPath(), ec);
+  if (!ok || ec) fs::remove(tmp, ec);
+  return ok && !ec;
+}
+
 void Database::fail(int rc, const std::string& doing) {
   const std::string msg = sqlite3_errmsg(db_);
   switch (rc & 0xff) {

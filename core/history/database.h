@@ -37,6 +37,17 @@ class Database {
   RecordId lastInsertId();
   bool inTransaction();
 
+  // A file whose check found damage is still read, but never written: every
+  // save (Transaction) is refused with the restore instructions.
+  void refuseWrites(std::string problems) { damage_ = std::move(problems); }
+  const std::string& damage() const { return damage_; }
+  // The one rolling backup, `path() + ".bak"`, refreshed after each committed
+  // save with the SQLite backup API (a consistent copy even under WAL).
+  std::string backupPath() const { return path_ + ".bak"; }
+  // Best effort: a full disk or read-only folder leaves the previous backup;
+  // the save itself has already committed. Returns false if it failed.
+  bool refreshBackup();
+
   // Turns the current SQLite error into an exception (InputError for the
   // operator-fixable ones: not a database, read-only, disk full, corrupt).
   [[noreturn]] void fail(int rc, const std::string& doing);
@@ -44,6 +55,7 @@ class Database {
  private:
   std::string path_;
   sqlite3* db_ = nullptr;
+  std::string damage_;
 };
 
 class Statement {

@@ -20,6 +20,21 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
   // Reading the header first: a foreign file or a newer schema is refused
   // before the WAL switch below could write anything to it.
   requireNotNewer(db, steps);
+  // A damaged page must not be written over (nor the damage spread by a
+  // migration): read what can be read, refuse every save (Transaction).
+  const std::string quick = quickCheck();
+  if (quick != "ok") {
+    db.refuseWrites(quick.substr(0, 300));
+    // Only a file already at the current schema can be read as it is; one that
+    // would need an upgrade cannot be upgraded without writing to it.
+    const int known = steps.empty() ? 0 : steps.back().version;
+    if (schemaVersionOf(db) != known) {
+      throw InputError("history database", "'" + path() + "' is damaged (" + quick.substr(0, 300) + ")",
+                       "restore the automatic backup: move '" + path() + "' aside and copy '" + db.backupPath() +
+                           "' to '" + path() + "'");
+    }
+    return;
+  }
   // WAL: a save appends to the -wal file and the main file changes only at
   // checkpoints, so a killed writer cannot leave a torn main file and readers
   // (the GUI) never block the writer.
@@ -38,15 +53,28 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
 
 int HistoryStore::schemaVersion() { return schemaVersionOf(*db_); }
 
-std::string HistoryStore::integrityCheck() {
-  auto st = db_->prepare("PRAGMA integrity_check");
-  std::string all;
-  while (st.step()) {
-    if (!all.empty()) all += "\n";
-    all += st.text(0);
+namespace {
+// "ok" or the problems a check pragma lists; SQLITE_CORRUPT while checking is
+// itself the answer.
+std::string runCheck(Database& db, const char* pragma) {
+  try {
+    auto st = db.prepare(pragma);
+    std::string all;
+    while (st.step()) {
+      if (!all.empty()) all += "; ";
+      all += st.text(0);
+    }
+    return all;
+  } catch (const InputError& e) {
+    if (e.problem().find("damaged") == std::string::npos) throw;
+    return e.problem();
   }
-  return all;
 }
+}  // namespace
+
+std::string HistoryStore::quickCheck() { return runCheck(*db_, "PRAGMA quick_check"); }
+
+std::string HistoryStore::integrityCheck() { return runCheck(*db_, "PRAGMA integrity_check"); }
 
 RecordId HistoryStore::configRow(const std::string& config_id) {
   auto st = db_->prepare("SELECT id FROM configurations WHERE config_id = ?1");

@@ -34,6 +34,9 @@ class HistoryStore {
   Database& database() { return *db_; }
   int schemaVersion();
   std::string integrityCheck();  // "ok" or SQLite's list of problems
+  std::string quickCheck();      // the same, cheaper (run on every open)
+  // Non-empty when the open check found damage; saves are then refused.
+  const std::string& damage() const { return db_->damage(); }
 
   // --- saves ---
   RecordId ensureVehicle(const std::string& key, const std::string& name);

@@ -2,8 +2,17 @@
 
 #include <sqlite3.h>
 
+#include "common/input_error.h"
+
 namespace auv {
 Transaction::Transaction(Database& db) : db_(db) {
+  if (!db_.damage().empty()) {
+    throw InputError("history database",
+                     "'" + db_.path() + "' is damaged (" + db_.damage() + "); nothing is written to it",
+                     "restore the automatic backup: move '" + db_.path() + "' aside, copy '" + db_.backupPath() +
+                         "' to '" + db_.path() + "' and save again; 'auvballast history --check --history " +
+                         db_.path() + "' lists the damage");
+  }
   if (db_.inTransaction()) {
     // Nesting is strictly LIFO and SQLite resolves a repeated savepoint name
     // to the most recent one, so one fixed name is enough.
@@ -17,6 +26,7 @@ Transaction::Transaction(Database& db) : db_(db) {
 void Transaction::commit() {
   db_.exec(savepoint_.empty() ? "COMMIT" : "RELEASE " + savepoint_, "committing a save");
   done_ = true;
+  if (savepoint_.empty()) db_.refreshBackup();
 }
 
 Transaction::~Transaction() {

@@ -2,7 +2,6 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <set>
 
 #include "common/input_error.h"
 #include "missionlog/unit_conversion.h"
@@ -14,14 +13,8 @@ namespace {
 
 constexpr int kVersion = 1;
 
-void refuseUnknownKeys(const JsonReader& r, const std::set<std::string>& known) {
-  if (!r.node().is_object()) r.fail("", "expected an object", "write it as { ... }");
-  for (const auto& [key, value] : r.node().items())
-    if (!known.count(key)) {
-      std::string list;
-      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-      r.fail(key, "unknown field", "the fields allowed here are: " + list);
-    }
+void refuseUnknownKeys(const JsonReader& r, std::initializer_list<std::string_view> known) {
+  r.refuseUnknownKeys(known, "docs/formats/column-mapping.md");
 }
 
 bool flag(const JsonReader& r, const std::string& key, bool fallback) {
@@ -143,6 +136,10 @@ ColumnMapping ColumnMapping::fromJson(const std::string& text, const std::string
 }
 
 ColumnMapping ColumnMapping::load(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw InputError("column mapping", "is a folder, FIFO or device, not a column-mapping file",
+                     "give the path of the mapping .json file (docs/formats/column-mapping.md)", {path.string(), 0, 0});
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw InputError("column mapping", "cannot open file", "check the path of the column mapping",

@@ -4,16 +4,20 @@
 // the whole file is read (detail/time_order.h), with the same rule as the
 // vendor readers.
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <optional>
 
 #include "common/input_error.h"
 #include "missionlog/detail/ascii_text.h"
+#include "missionlog/detail/attitude_sanity.h"
 #include "missionlog/detail/interchange_header.h"
 #include "missionlog/detail/interchange_rows.h"
 #include "missionlog/detail/line_cells.h"
 #include "missionlog/detail/memory_guard.h"
+#include "missionlog/detail/report_problem.h"
 #include "missionlog/detail/time_order.h"
 #include "missionlog/interchange_csv.h"
 #include "missionlog/iso8601.h"
@@ -74,6 +78,8 @@ class Parser {
 
  private:
   void preambleLine(std::string_view line);
+  void checkAttitudeUnits(std::vector<detail::InterchangeColumn>& cols, std::vector<std::vector<double>>& data,
+                          std::size_t timeCol);
 
   std::string file_;
   const ReadOptions& opt_;
@@ -81,6 +87,7 @@ class Parser {
   std::uint64_t size_hint_;
 
   long long line_ = 0;  // up to the header; the row reader counts on from there
+  long long header_line_ = 0;
   std::vector<MetadataEntry> meta_;
   std::optional<detail::InterchangeRowReader> rows_;  // set once the header is read
 };
@@ -100,6 +107,7 @@ void Parser::preambleLine(std::string_view line) {
     meta_.push_back(detail::parseMetadataLine(t.substr(1)));
     return;
   }
+  header_line_ = line_;
   rows_.emplace(file_, detail::parseInterchangeHeader(line, file_, line_, opt_, rep_), line_, size_hint_, opt_,
                 rep_);
 }
@@ -129,6 +137,7 @@ MissionLog Parser::finish() {
   for (std::size_t c = 0; c < cols.size(); ++c)
     if (!cols[c].conv.isIdentity() && !cols[c].ignored)
       for (double& v : data[c]) v = cols[c].conv.apply(v);
+  checkAttitudeUnits(cols, data, timeCol);
   if (rows_->header().iso_time) {
     std::vector<double>& t = data[timeCol];
     std::optional<double> start = log.startEpochSeconds();
@@ -171,6 +180,58 @@ MissionLog Parser::finish() {
   rep_.rows_kept = static_cast<long long>(log.time.size());
   rep_.lines = lastLine;
   return log;
+}
+
+// Pitch and roll after conversion to degrees (detail/attitude_sanity.h, the
+// rule the vendor readers use): mostly beyond +-90/180 deg is meaningless and
+// refused (degrees under a [rad] header would give thousands of kg); a few
+// beyond are blanked with a warning; a dived log whose attitude stays within
+// +-1.6 "deg" is warned about as likely radians.
+void Parser::checkAttitudeUnits(std::vector<detail::InterchangeColumn>& cols, std::vector<std::vector<double>>& data,
+                                std::size_t timeCol) {
+  double zmin = 0.0, zmax = 0.0;
+  bool anyDepth = false;
+  for (std::size_t c = 0; c < cols.size(); ++c) {
+    if (c == timeCol || cols[c].ignored || cols[c].name != "depth") continue;
+    for (double v : data[c])
+      if (std::isfinite(v)) {
+        zmin = anyDepth ? std::min(zmin, v) : v;
+        zmax = anyDepth ? std::max(zmax, v) : v;
+        anyDepth = true;
+      }
+  }
+  for (std::size_t c = 0; c < cols.size(); ++c) {
+    // The measured attitude the analysis uses; commands (pitch_cmd) and
+    // model outputs are extra channels whose values the reader keeps as given.
+    if (c == timeCol || cols[c].ignored || (cols[c].name != "pitch" && cols[c].name != "roll")) continue;
+    const std::string base = cols[c].name;
+    const detail::AttitudeCheck a = detail::checkAttitudeDeg(base, data[c]);
+    if (a.limit_deg == 0.0) continue;
+    const std::string declared = "[" + (cols[c].source_unit.empty() ? cols[c].unit : cols[c].source_unit) + "]";
+    const bool declaredRad = !cols[c].conv.isIdentity();  // the only angle conversion is from radians
+    const std::string other = declaredRad ? "deg" : "rad";
+    if (a.beyond > 0) {
+      const std::string what = std::to_string(a.beyond) + " of " + std::to_string(a.valid) + " values beyond +-" +
+                               numberText(a.limit_deg - 0.5) + " deg (up to " + numberText(a.worst_deg) +
+                               " deg read as " + declared + ")";
+      const std::string fix = "if the column holds " + (other == "deg" ? std::string("degrees") : "radians") +
+                              ", write `" + cols[c].name + " [" + other + "]` in the header (docs/formats/mission-log-csv.md)";
+      if (a.mostlyBeyond()) {
+        throw InputError(cols[c].name, what + ": the unit is wrong and the attitude meaningless", fix,
+                         {file_, header_line_, 0});
+      }
+      rep_.cells_blanked += static_cast<long long>(a.beyond);
+      detail::reportProblem(rep_, opt_, ReadProblemKind::kValueOutOfRange, {file_, header_line_, 0}, cols[c].name,
+                            what + "; treated as not sampled", fix);
+    } else if (!declaredRad && detail::looksLikeRadians(base, a, zmax - zmin)) {
+      detail::reportProblem(rep_, opt_, ReadProblemKind::kUnitAssumed, {file_, header_line_, 0}, cols[c].name,
+                            "all " + std::to_string(a.valid) + " values are within +-" + numberText(a.max_abs_deg) +
+                                " " + declared + " while the vehicle changed depth by " +
+                                numberText(zmax - zmin) + " m, which looks like radians",
+                            "if the column holds radians, write `" + cols[c].name +
+                                " [rad]` in the header (docs/formats/mission-log-csv.md)");
+    }
+  }
 }
 
 // The block loop shared by files and memory. Unlike forEachLine it hands the
@@ -240,11 +301,20 @@ bool InterchangeCsvReader::canRead(const std::filesystem::path&, std::string_vie
     if (t.empty() || t.front() == '#') continue;
     std::vector<detail::Cell> cells;
     detail::splitAt(line, ',', cells);
+    // Also claimed: a header of `name [unit]` cells with format channels but
+    // no time-like column at all, so the refusal is this format's "no `time`
+    // column" at file:line:column rather than "no reader recognises".
+    bool allWellFormed = true, anyChannel = false, timeLike = false;
     for (const auto& c : cells) {
       const detail::HeaderCell h = detail::parseHeaderCell(c.text);
       if (h.name == "time" && h.well_formed) return true;
+      allWellFormed = allWellFormed && h.well_formed && h.bracket;
+      anyChannel = anyChannel || !canonicalUnitFor(h.name).empty();
+      std::string lower(h.name);
+      for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      timeLike = timeLike || lower.find("time") != std::string::npos || lower.find("date") != std::string::npos;
     }
-    return false;
+    return allWellFormed && anyChannel && !timeLike;
   }
   return false;
 }

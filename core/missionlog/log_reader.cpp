@@ -34,6 +34,16 @@ void LogReaderRegistry::add(std::unique_ptr<LogReader> reader) {
 }
 
 std::string readFirstBytes(const std::filesystem::path& path, std::size_t maxBytes) {
+  // Opening a FIFO blocks until a writer appears, and a device never ends:
+  // refuse them before opening.
+  std::error_code ec;
+  const auto type = std::filesystem::status(path, ec).type();
+  if (type == std::filesystem::file_type::fifo || type == std::filesystem::file_type::character ||
+      type == std::filesystem::file_type::block || type == std::filesystem::file_type::socket) {
+    throw InputError("log", type == std::filesystem::file_type::fifo ? "is a FIFO (named pipe), not a log file"
+                                                                       : "is a device or socket, not a log file",
+                     "save the recording to a regular file and give that path", {path.string(), 0, 0});
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw InputError("log", std::string("cannot open file: ") + std::strerror(errno),

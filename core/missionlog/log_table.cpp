@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "missionlog/detail/attitude_sanity.h"
 #include "missionlog/detail/report_problem.h"
 #include "missionlog/detail/table_rows.h"
 #include "missionlog/detail/time_order.h"
@@ -120,23 +121,9 @@ void TableTidier::convertUnits() {
 // almost always a column in degrees declared as radians (or the reverse).
 void TableTidier::checkPhysicalLimits(TableColumn& c) {
   const std::string base(baseChannelName(c.name));
-  double limit = 0.0;
-  if (base == "pitch") limit = 90.5;
-  else if (base == "roll") limit = 180.5;
-  else return;
-  std::size_t bad = 0, valid = 0, first = 0;
-  double worst = 0.0;
-  for (std::size_t i = 0; i < c.values.size(); ++i) {
-    double& v = c.values[i];
-    if (std::isnan(v)) continue;
-    ++valid;
-    if (std::fabs(v) > limit) {
-      if (!bad) first = i;
-      ++bad;
-      worst = std::max(worst, std::fabs(v));
-      v = kNaN;
-    }
-  }
+  const detail::AttitudeCheck a = detail::checkAttitudeDeg(base, c.values);
+  const std::size_t bad = a.beyond, valid = a.valid, first = a.first_beyond;
+  const double limit = a.limit_deg, worst = a.worst_deg;
   if (!bad) return;
   rep_.cells_blanked += static_cast<long long>(bad);
   std::string what = rowPrefix(first) + std::to_string(bad) + " of " + std::to_string(valid) + " values beyond +-" +

@@ -344,7 +344,25 @@ MissionLog SlocumAsciiReader::read(const std::filesystem::path& path, const Read
   return readSlocumAscii(path, options, report);
 }
 
+// A raw Slocum binary (.dbd/.ebd/.sbd/...) starts with the same `dbd_label:`
+// tags as dbd2asc output; telling its owner to "export with m_present_time"
+// would be wrong: it has to be converted (or read by a binary reader) first.
+static void refuseRawSlocumBinary(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  static const char* const kBinary[] = {".dbd", ".ebd", ".sbd", ".tbd", ".mbd", ".nbd",
+                                        ".dcd", ".ecd", ".scd", ".tcd", ".mcd", ".ncd"};
+  for (const char* b : kBinary) {
+    if (ext == b) {
+      throw InputError("log", "is a raw Slocum binary file (" + ext + "), not dbd2asc text output",
+                       "convert it with dbd2asc (with its cache files) and give the text output, or a glider NetCDF",
+                       {path.string(), 0, 0});
+    }
+  }
+}
+
 MissionLog readSlocumAscii(const std::filesystem::path& path, const ReadOptions& options, ReadReport& report) {
+  refuseRawSlocumBinary(path);
   BlockFile file(path);
   return run(file.name(), file.size(), FilePull{&file}, options, report);
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/input_error.h"
+#include "planning/report_consistency.h"
 #include "history/ballasting_file.h"  // the deviation keys a ballasting-file record carries (header only)
 #include "seawater/seawater.h"
 
@@ -47,6 +48,9 @@ TrimEstimate deviationsOnlyEstimate(const VehicleProfile& v, const nlohmann::jso
 PlanStart planStartFromReport(const VehicleProfile& v, const nlohmann::json& report, const std::string& report_name,
                               PlanPolicy policy, std::optional<double> recorded_total_mass_kg,
                               std::optional<MeasuredWater> measured) {
+  // Another vehicle's estimate would give a plausible but meaningless move
+  // (CLI and wizard both start here).
+  checkReportMatchesVehicle(report, report_name, v);
   PlanStart s;
   s.physical = number(report, "net_buoyancy_kg").has_value();
   if (s.physical) {

@@ -13,6 +13,7 @@
 #include "firstmission/hugin_first_mission.h"
 #include "planning/change_explanation.h"
 #include "planning/flight_pitch.h"
+#include "vehicle/installed_check.h"
 
 namespace auv {
 namespace {
@@ -202,11 +203,7 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
   if (v.points.empty()) {
     throw InputError("vehicle", "profile '" + v.id + "' has no adjustment points", "add adjustment_points to the profile");
   }
-  if (!in.installed_kg.empty() && in.installed_kg.size() != v.points.size()) {
-    throw InputError("installed", "expected " + std::to_string(v.points.size()) + " values, got " +
-                                      std::to_string(in.installed_kg.size()),
-                     "give one installed mass per adjustment point, in profile order");
-  }
+  if (!in.installed_kg.empty()) checkInstalledKg(v, in.installed_kg, "installed");
   if (!(in.sigma_factor >= 0.0) || !std::isfinite(in.sigma_factor)) {
     throw InputError("sigma_factor", "must be a number >= 0", "use 1.645 for one-sided 95 %");
   }

@@ -4,6 +4,7 @@
 
 #include "common/input_error.h"
 #include "common/units.h"
+#include "vehicle/installed_check.h"
 
 namespace auv::sim {
 
@@ -39,25 +40,10 @@ FlownMass flownMass(double mass_kg, const Eigen::Vector3d& r_g_m, const Eigen::V
 }
 
 std::vector<MassItem> installedWeights(const VehicleProfile& profile, std::span<const double> kg) {
-  if (kg.size() != profile.points.size()) {
-    std::string names;
-    for (const auto& p : profile.points) {
-      if (!names.empty()) names += ',';
-      names += p.name;
-    }
-    throw InputError("installed",
-                     "has " + std::to_string(kg.size()) + " values but '" + profile.id + "' has " +
-                         std::to_string(profile.points.size()) + " adjustment points",
-                     "give one mass in kg per point, in this order: " + names);
-  }
+  checkInstalledKg(profile, kg, "installed");
   std::vector<MassItem> items;
   for (std::size_t i = 0; i < kg.size(); ++i) {
     const AdjustmentPoint& p = profile.points[i];
-    if (!(kg[i] >= 0.0) || kg[i] > p.capacity_kg + 1e-9) {
-      throw InputError("installed", "mass at " + p.name + " must be between 0 and " +
-                                        std::to_string(p.capacity_kg) + " kg (the point's capacity)",
-                       "give the kg of adjustment weight installed at each point");
-    }
     items.push_back({kg[i], p.position_m});
   }
   return items;

@@ -17,6 +17,12 @@ GliderModel loadGliderModel(const VehicleProfile& p) {
                      "add a \"glider_flight\" section to " + p.file, {p.file, 0, 0});
   }
   const JsonReader f(p.sections["glider_flight"], p.file, "glider_flight");
+  f.refuseUnknownKeys({"source", "comment", "hull_compressibility_per_dbar", "wing_area_m2", "lift_slope_per_rad",
+                       "induced_drag_per_rad2", "Cd0", "pump_max_cm3", "pump_rate_cm3_per_s", "pump_x_mm",
+                       "pitch_battery_mass_kg", "pitch_battery_travel_mm", "pitch_battery_rate_mm_per_s",
+                       "pitch_time_constant_s", "speed_time_constant_s", "dive_pitch_deg", "climb_pitch_deg",
+                       "control_interval_s", "hotel_w", "pump_w", "pitch_battery_w"},
+                      "docs/formats/vehicle-profile.md");
   GliderModel g;
   g.id = p.id;
   g.mass_kg = p.mass_kg;

@@ -7,14 +7,21 @@
 #include "common/input_error.h"
 #include "common/units.h"
 #include "sim/model_loader.h"
+#include "vehicle/installed_check.h"
 #include "vehicle/json_reader.h"
 
 namespace auv::sim {
+namespace {
+constexpr std::string_view kPlanDoc = "docs/formats/mission-plan.md";
+}
 
 WaterColumn parseWater(const JsonReader& w) {
+  w.refuseUnknownKeys({"density_kgm3", "temperature_degC", "salinity_psu", "cast", "max_depth_m", "grid_m", "latitude_deg"},
+                      kPlanDoc);
   if (w.has("cast")) {
     std::vector<CtdPoint> cast;
     for (const JsonReader& level : w.array("cast")) {
+      level.refuseUnknownKeys({"depth_m", "temperature_degC", "salinity_psu"}, kPlanDoc);
       cast.push_back({level.numberIn("depth_m", 0.0, 11000.0), level.numberIn("temperature_degC", -2.0, 40.0),
                       level.numberIn("salinity_psu", 0.0, 42.0)});
     }
@@ -32,13 +39,18 @@ WaterColumn parseWater(const JsonReader& w) {
 WaterColumn loadWaterFile(const std::string& file) {
   const nlohmann::json doc = JsonReader::parseFile(file);
   const JsonReader root(doc, file);
-  return parseWater(root.has("water") ? root.child("water") : root);
+  if (root.has("water")) {
+    root.refuseUnknownKeys({"water", "description", "comment"}, kPlanDoc);
+    return parseWater(root.child("water"));
+  }
+  return parseWater(root);
 }
 
 namespace {
 
 DepthLeg readLeg(const JsonReader& l) {
   const std::string type = l.text("type");
+  l.refuseUnknownKeys({"type", "duration_s", "depth_m", "pitch_deg", "heading_deg", "prop_demand"}, kPlanDoc);
   DepthLeg leg;
   leg.duration_s = l.numberIn("duration_s", 1e-3, 1e7);
   leg.depth_m = l.numberIn("depth_m", 0.0, 11000.0);
@@ -56,6 +68,8 @@ DepthLeg readLeg(const JsonReader& l) {
 }
 
 YoLeg readYoLeg(const JsonReader& l) {
+  l.refuseUnknownKeys({"type", "duration_s", "dive_to_m", "climb_to_m", "pump_cm3", "dive_pitch_deg", "climb_pitch_deg"},
+                      kPlanDoc);
   YoLeg leg;
   leg.duration_s = l.numberIn("duration_s", 1e-3, 1e7);
   leg.dive_to_m = l.numberIn("dive_to_m", 0.0, 11000.0);
@@ -77,6 +91,9 @@ bool readBool(const JsonReader& r, const std::string& key) {
 
 MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file) {
   const JsonReader root(doc, file);
+  root.refuseUnknownKeys({"format", "version", "vehicle", "description", "water", "initial", "installed_kg", "ballast_error",
+                          "legs", "events", "ballast_changes", "options"},
+                         kPlanDoc);
   const std::string format = root.text("format");
   if (format != "auvballast-mission-plan") {
     root.fail("format", "not a mission plan", "set \"format\": \"auvballast-mission-plan\"");
@@ -90,6 +107,7 @@ MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file)
 
   Scenario& sc = plan.scenario;
   if (auto init = root.optionalChild("initial")) {
+    init->refuseUnknownKeys({"depth_m", "speed_mps", "pitch_deg", "heading_deg", "net_buoyancy_n"}, kPlanDoc);
     sc.initial_depth_m = init->numberIn("depth_m", -1.0, 11000.0, 0.0);
     sc.initial_speed_mps = init->numberIn("speed_mps", 0.0, 20.0, 0.0);
     sc.initial_pitch_rad = units::degToRad(init->numberIn("pitch_deg", -90.0, 90.0, 0.0));
@@ -98,6 +116,7 @@ MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file)
   }
   if (root.has("installed_kg")) plan.installed_kg = root.numbers("installed_kg");
   if (auto e = root.optionalChild("ballast_error")) {
+    e->refuseUnknownKeys({"net_buoyancy_kg", "cg_x_mm", "cg_y_mm", "cg_z_mm"}, kPlanDoc);
     sc.ballast_error.net_buoyancy_kg = e->numberIn("net_buoyancy_kg", -1e4, 1e4, 0.0);
     sc.ballast_error.cg_shift_m = {units::mmToM(e->numberIn("cg_x_mm", -1e4, 1e4, 0.0)),
                                    units::mmToM(e->numberIn("cg_y_mm", -1e4, 1e4, 0.0)),
@@ -122,12 +141,14 @@ MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file)
   if (root.has("events")) {
     const double end = scenarioDuration(sc);
     for (const JsonReader& e : root.array("events")) {
+      e.refuseUnknownKeys({"time_s", "buoyancy_change_n"}, kPlanDoc);
       const double t = e.numberIn("time_s", 0.0, end);
       sc.buoyancy_changes.push_back({t, e.numberIn("buoyancy_change_n", -1e5, 1e5)});
     }
   }
   if (root.has("ballast_changes")) {
     for (const JsonReader& m : root.array("ballast_changes")) {
+      m.refuseUnknownKeys({"mass_kg", "x_mm", "y_mm", "z_mm"}, kPlanDoc);
       sc.extra_masses.push_back({m.numberIn("mass_kg", -1e4, 1e4),
                                  {units::mmToM(m.numberIn("x_mm", -1e5, 1e5)), units::mmToM(m.numberIn("y_mm", -1e5, 1e5)),
                                   units::mmToM(m.numberIn("z_mm", -1e5, 1e5))}});
@@ -142,6 +163,9 @@ MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file)
 
   SimOptions& o = plan.options;
   if (auto opt = root.optionalChild("options")) {
+    opt->refuseUnknownKeys({"dt_s", "trace_interval_s", "seed", "surface_model", "preload_hover_integrator", "anti_windup",
+                            "noise"},
+                           kPlanDoc);
     o.dt_s = opt->numberIn("dt_s", 1e-4, 1.0, o.dt_s);
     o.trace_interval_s = opt->numberIn("trace_interval_s", 1e-4, 3600.0, o.trace_interval_s);
     o.seed = static_cast<std::uint64_t>(opt->numberIn("seed", 0.0, 9007199254740991.0, 1.0));
@@ -149,6 +173,9 @@ MissionPlan parseMissionPlan(const nlohmann::json& doc, const std::string& file)
     if (opt->has("preload_hover_integrator")) o.preload_hover_integrator = readBool(*opt, "preload_hover_integrator");
     if (opt->has("anti_windup")) plan.anti_windup = readBool(*opt, "anti_windup");
     if (auto n = opt->optionalChild("noise")) {
+      n->refuseUnknownKeys({"depth_m", "depth_rate_mps", "pitch_deg", "pitch_rate_degps", "roll_deg", "speed_mps",
+                            "heading_deg", "temperature_degC", "salinity_psu", "pressure_dbar"},
+                           kPlanDoc);
       o.noise.depth_m = n->numberIn("depth_m", 0.0, 100.0, 0.0);
       o.noise.depth_rate_mps = n->numberIn("depth_rate_mps", 0.0, 10.0, 0.0);
       o.noise.pitch_rad = units::degToRad(n->numberIn("pitch_deg", 0.0, 45.0, 0.0));
@@ -169,6 +196,7 @@ MissionPlan loadMissionPlan(const std::string& file) { return parseMissionPlan(J
 GliderScenario resolveGliderScenario(const MissionPlan& plan, const VehicleProfile& profile) {
   GliderScenario sc = plan.glider;
   if (!plan.installed_kg.empty()) {
+    checkInstalledKg(profile, plan.installed_kg, "installed_kg", {plan.file, 0, 0});
     const std::vector<MassItem> w = installedWeights(profile, plan.installed_kg);
     sc.extra_masses.insert(sc.extra_masses.begin(), w.begin(), w.end());
   }
@@ -178,6 +206,7 @@ GliderScenario resolveGliderScenario(const MissionPlan& plan, const VehicleProfi
 Scenario resolveScenario(const MissionPlan& plan, const VehicleProfile& profile) {
   Scenario sc = plan.scenario;
   if (!plan.installed_kg.empty()) {
+    checkInstalledKg(profile, plan.installed_kg, "installed_kg", {plan.file, 0, 0});
     const std::vector<MassItem> w = installedWeights(profile, plan.installed_kg);
     sc.extra_masses.insert(sc.extra_masses.begin(), w.begin(), w.end());
   }

@@ -8,6 +8,8 @@
 namespace auv::sim {
 namespace {
 
+constexpr std::string_view kDoc = "docs/formats/vehicle-profile.md";
+
 RigidBody readBody(const VehicleProfile& profile, const JsonReader& hydro) {
   RigidBody b;
   b.mass_kg = profile.mass_kg;
@@ -23,6 +25,10 @@ RigidBody readBody(const VehicleProfile& profile, const JsonReader& hydro) {
 }
 
 Hydrodynamics readHydro(const JsonReader& r) {
+  r.refuseUnknownKeys({"source", "comment", "reference_length_m", "Iyy_kgm2", "Xudot_kg", "Zwdot_kg", "Mqdot_kgm2_per_rad",
+                       "Xu_kg_per_s", "Zw_prime", "Zq_prime", "Mw_prime", "Mq_prime", "Xuu_kg_per_m", "Zww_kg_per_m",
+                       "Zqq_kgm_per_rad2", "Mww_kg", "Mqq_kgm2_per_rad2"},
+                      kDoc);
   Hydrodynamics h;
   // Added masses and damping derivatives are <= 0 in SNAME sign convention.
   h.Xudot_kg = r.numberIn("Xudot_kg", -1e6, 0.0);
@@ -42,6 +48,12 @@ Hydrodynamics readHydro(const JsonReader& r) {
 }
 
 void readAssumptions(const JsonReader& r, VehicleModel& v) {
+  r.refuseUnknownKeys({"source", "comment", "Ixx_kgm2", "Kpdot_kgm2", "Kp_kgm2_per_s", "Kpp_kgm2", "prop_KQ0",
+                       "prop_torque_sign", "prop_max_demand", "prop_time_constant_s", "prop_max_rate_rps_per_s",
+                       "thruster_deadband_rpm", "thruster_max_rpm", "thruster_time_constant_s", "stern_plane_max_deg",
+                       "stern_plane_rate_deg_per_s", "hotel_w", "prop_w_per_rps2", "thruster_w_per_rpm3",
+                       "thruster_idle_w", "fins_idle_w", "fins_w_per_m2s2_deg"},
+                      kDoc);
   v.body.Ixx_kgm2 = r.numberIn("Ixx_kgm2", 1e-4, 1e6);
   v.hydro.Kpdot_kgm2 = r.numberIn("Kpdot_kgm2", -1e6, 0.0);
   v.hydro.Kp_kgm2_per_s = r.numberIn("Kp_kgm2_per_s", -1e6, 0.0);
@@ -67,7 +79,11 @@ void readAssumptions(const JsonReader& r, VehicleModel& v) {
 }
 
 void readActuators(const JsonReader& r, VehicleModel& v) {
+  r.refuseUnknownKeys({"source", "comment", "propeller", "tunnel_thrusters", "stern_planes"}, kDoc);
   const JsonReader p = r.child("propeller");
+  p.refuseUnknownKeys({"KT0", "diameter_m", "c_prop1", "c_prop2", "wake_fraction", "thrust_deduction",
+                       "rps_from_demand_poly"},
+                      kDoc);
   v.prop.KT0 = p.numberIn("KT0", 0.0, 2.0);
   v.prop.diameter_m = p.numberIn("diameter_m", 0.01, 10.0);
   v.prop.c1 = p.numberIn("c_prop1", 1e-3, 10.0);
@@ -83,6 +99,9 @@ void readActuators(const JsonReader& r, VehicleModel& v) {
   v.prop.rps_a0 = poly[2];
 
   if (auto t = r.optionalChild("tunnel_thrusters")) {
+    t->refuseUnknownKeys({"KT_th_per_rpm2", "diameter_m", "spacing_m", "front_x_m", "aft_x_m", "c_th1_s2_per_m2", "c_th2",
+                          "drag_fit_eq8"},
+                         kDoc);
     v.thruster_count = 2;
     TunnelThruster th;
     th.KT_per_rpm2 = t->numberIn("KT_th_per_rpm2", 0.0, 1.0);
@@ -103,6 +122,7 @@ void readActuators(const JsonReader& r, VehicleModel& v) {
   }
 
   const JsonReader s = r.child("stern_planes");
+  s.refuseUnknownKeys({"X_uudd_kg_per_m_deg2", "Z_uud_kg_per_m_deg", "M_uud_kg_per_deg"}, kDoc);
   v.planes.X_uudd_per_deg2 = s.numberIn("X_uudd_kg_per_m_deg2", -100.0, 0.0);
   v.planes.Z_uud_per_deg = s.numberIn("Z_uud_kg_per_m_deg", -1e4, 1e4);
   v.planes.M_uud_per_deg = s.numberIn("M_uud_kg_per_deg", -1e4, 1e4);
@@ -111,6 +131,7 @@ void readActuators(const JsonReader& r, VehicleModel& v) {
 PidGains readGains(const JsonReader& r, const std::string& key, const std::string& p_unit,
                    const std::string& i_unit, const std::string& d_unit, double to_si) {
   const JsonReader g = r.child(key);
+  g.refuseUnknownKeys({"K_P_" + p_unit, "K_I_" + i_unit, "K_D_" + d_unit}, kDoc);
   return {g.number("K_P_" + p_unit) * to_si, g.number("K_I_" + i_unit) * to_si, g.number("K_D_" + d_unit) * to_si};
 }
 
@@ -142,6 +163,12 @@ VehicleModel loadVehicleModel(const VehicleProfile& profile) {
 
 DepthAutopilotConfig loadAutopilotConfig(const nlohmann::json& doc, const std::string& file) {
   const JsonReader a = JsonReader(doc, file).child("autopilot");
+  a.refuseUnknownKeys({"source", "comment", "sample_time_s", "hover_depth_force", "hover_cr_shift", "cr0_x_m",
+                       "cr_shift_max_m", "anti_windup_depth_error_m", "anti_windup_depth_rate_mps", "hover_preload_factor",
+                       "pitch_bias", "pitch_bias_max_deg", "stern_plane", "thruster_mid_speed_mps",
+                       "thruster_transition_width_mps", "plane_mid_speed_mps", "plane_transition_width_mps", "heading",
+                       "heading_max_rudder_deg", "heading_integrate_within_deg"},
+                      kDoc);
   DepthAutopilotConfig c;
   c.sample_time_s = a.numberIn("sample_time_s", 1e-3, 10.0);
   const double deg = units::degToRad(1.0);

@@ -21,25 +21,68 @@ bool hasSamples(const MissionLog& log, const char* name) {
   return c != nullptr && c->validCount() > 0;
 }
 
-// `name` on the model grid; a gap (or the stretch before the first sample)
-// holds the nearest earlier (or the first) valid value. Empty if absent.
-std::vector<double> onGrid(const MissionLog& log, const char* name, const std::vector<double>& grid,
-                           Interpolation method) {
-  if (!hasSamples(log, name)) return {};
-  std::vector<double> v = resample(log.series(name), grid, {method});
-  const auto valid = std::find_if(v.begin(), v.end(), [](double x) { return !std::isnan(x); });
-  double last = valid == v.end() ? kNaN : *valid;
-  for (double& x : v) {
-    if (std::isnan(x)) {
-      x = last;
-    } else {
-      last = x;
+// A driving channel brought onto the model grid one chunk of steps at a time,
+// so memory follows the chunk, not the time span. A hole (or the stretch
+// before the first sample) holds the nearest earlier (or the first) valid value.
+class GridChannel {
+ public:
+  GridChannel() = default;
+  GridChannel(const MissionLog& log, const char* name, Interpolation method) : method_(method) {
+    if (hasSamples(log, name)) series_ = log.series(name);
+  }
+  bool empty() const { return series_.empty(); }
+  void restart() { last_ = kNaN; }
+  void fill(const std::vector<double>& grid) {
+    if (empty()) return;
+    values_ = resample(series_, grid, {method_});
+    if (std::isnan(last_)) {
+      const auto valid = std::find_if(values_.begin(), values_.end(), [](double x) { return !std::isnan(x); });
+      if (valid != values_.end()) last_ = *valid;
+    }
+    for (double& x : values_) {
+      if (std::isnan(x)) {
+        x = last_;
+      } else {
+        last_ = x;
+      }
     }
   }
-  return v;
+  double operator[](std::size_t i) const { return values_[i]; }
+
+ private:
+  Interpolation method_ = Interpolation::kLinear;
+  TimeSeries series_;
+  std::vector<double> values_;
+  double last_ = kNaN;
+};
+
+// Value of `name` at t0; if the log has none there, its first sample after t0
+// (a span may start on a row where that sensor dropped out).
+double valueAt(const MissionLog& log, const char* name, double t0, double fallback) {
+  if (!hasSamples(log, name)) return fallback;
+  const TimeSeries s = log.series(name);
+  const std::vector<double> v = resample(s, std::vector<double>{t0}, {Interpolation::kLinear});
+  if (!std::isnan(v.front())) return v.front();
+  const auto it = std::lower_bound(s.t.begin(), s.t.end(), t0);
+  if (it != s.t.end()) return s.v[static_cast<std::size_t>(it - s.t.begin())];
+  return s.v.back();
 }
 
-double first(const std::vector<double>& v, double fallback) { return v.empty() ? fallback : v.front(); }
+// Rows further apart than this split the replay into spans; the model
+// restarts from the first row after the gap. 20 typical row spacings, at
+// least 30 s: longer than any autopilot transient worth following through a
+// drop-out, and it bounds the steps flown (and the time taken) by the rows.
+double restartGap_s(const std::vector<double>& t) {
+  std::vector<double> d;
+  d.reserve(t.size());
+  for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
+  if (d.empty()) return 30.0;
+  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+  return std::max(30.0, 20.0 * d[d.size() / 2]);
+}
+
+constexpr long kChunkSteps = 4096;  // model steps whose driving values are held at once
+
 
 void require(const MissionLog& log, const char* name, const std::string& why) {
   if (!hasSamples(log, name)) {
@@ -99,6 +142,114 @@ ReplayDrive resolveReplayDrive(const VehicleModel& model, const MissionLog& log,
   return requested;
 }
 
+namespace {
+
+struct Drivers {
+  GridChannel rpm, elevator, th_front, th_aft, pitch_cmd, depth_cmd, heading_set, rudder;
+};
+
+struct SpanContext {
+  const VehicleModel& model;
+  const DepthAutopilotConfig& apcfg;
+  const WaterColumn& water;
+  const MissionLog& log;
+  const ReplayOptions& opt;
+  ReplayDrive drive;
+};
+
+// Flies rows [row0, row1) (no gap between them) from the state of row0 and
+// appends one sample per row; returns the engine's totals through `totals`.
+void replaySpan(const SpanContext& c, Drivers& d, std::size_t row0, std::size_t row1, SimTrace& tr, SimTrace& totals) {
+  const MissionLog& log = c.log;
+  const double dt = c.opt.dt_s;
+  const double t0 = log.time[row0];
+  const long n_steps = static_cast<long>(std::floor((log.time[row1 - 1] - t0) / dt + 1e-9));
+  for (GridChannel* g : {&d.rpm, &d.elevator, &d.th_front, &d.th_aft, &d.pitch_cmd, &d.depth_cmd, &d.heading_set,
+                         &d.rudder})
+    g->restart();
+
+  InitialState init;
+  init.depth_m = valueAt(log, "depth", t0, 0.0);
+  init.pitch_rad = units::degToRad(valueAt(log, "pitch", t0, 0.0));
+  init.roll_rad = units::degToRad(valueAt(log, "roll", t0, 0.0));
+  init.heading_rad = units::degToRad(valueAt(log, "heading", t0, 0.0));
+  init.speed_mps = valueAt(log, "speed", t0, 0.0);
+  init.prop_rps = valueAt(log, "prop_rpm", t0, 0.0) / 60.0;
+
+  StepEngine eng(c.model, c.water, dt, c.opt.surface_model);
+  eng.start(init, c.opt.loading);
+  const long control_every = std::max(1L, std::lround(c.apcfg.sample_time_s / dt));
+  DepthAutopilot ap(c.apcfg, c.model);
+  HeadingAutopilot hp(c.apcfg.heading, static_cast<double>(control_every) * dt);
+  ActuatorDemand demand;
+  double rudder_demand = 0.0;
+  GaussianSource no_noise(0);
+  const SensorNoise exact;
+  const double W = eng.weightN();
+  const bool actuators = c.drive == ReplayDrive::Actuators;
+
+  std::size_t row = row0;  // next row to sample, at the step nearest to its time
+  const auto stepOf = [&](std::size_t r) {
+    return std::clamp(std::lround((log.time[r] - t0) / dt), 0L, n_steps);
+  };
+  std::vector<double> grid;
+  for (long c0 = 0; c0 <= n_steps; c0 += kChunkSteps) {
+    const long c1 = std::min(n_steps, c0 + kChunkSteps - 1);
+    grid.clear();
+    for (long k = c0; k <= c1; ++k) grid.push_back(t0 + static_cast<double>(k) * dt);
+    for (GridChannel* g : {&d.rpm, &d.elevator, &d.th_front, &d.th_aft, &d.pitch_cmd, &d.depth_cmd, &d.heading_set,
+                           &d.rudder})
+      g->fill(grid);
+    for (long k = c0; k <= c1; ++k) {
+      const auto i = static_cast<std::size_t>(k - c0);
+      if (k > 0) eng.sampleWater();
+      ActuatorState& act = eng.actuators();
+      act.prop_rps = std::max(0.0, d.rpm[i] / 60.0);
+      if (actuators) {
+        act.plane_rad = -units::degToRad(d.elevator[i]);  // log sign -> paper sign
+        if (c.model.thruster_count > 0) {
+          act.thruster_rpm[0] = d.th_front[i];
+          act.thruster_rpm[1] = d.th_aft[i];
+        }
+      }
+      if (!d.rudder.empty()) eng.yaw().rudder_rad = units::degToRad(d.rudder[i]);
+
+      const Measurement meas = eng.measure(no_noise, exact);
+      const bool control_now = k % control_every == 0;
+      // Without a logged heading the heading hold keeps the start heading.
+      const double heading_cmd = !c.apcfg.heading.enabled ? kNaN
+                                 : d.heading_set.empty()  ? init.heading_rad
+                                                          : units::degToRad(d.heading_set[i]);
+      if (control_now && !actuators) {
+        Setpoint sp{d.depth_cmd[i], 0.0, 0.0};
+        if (c.drive == ReplayDrive::PitchCommands) {
+          sp.pitch_rad = units::degToRad(d.pitch_cmd[i]);
+          sp.pitch_is_demand = true;
+        }
+        demand = ap.update(meas, sp, eng.water().density_kgm3);
+      }
+      if (control_now && d.rudder.empty())
+        rudder_demand = hp.update(heading_cmd, eng.yaw().heading_rad, eng.yaw().r_radps);
+      if (row < row1 && stepOf(row) == k) {
+        const SampleExtras x{d.depth_cmd.empty() ? kNaN : d.depth_cmd[i],
+                             actuators ? kNaN : ap.outputs().pitch_cmd_rad, heading_cmd, ap.outputs().hover_force_n};
+        eng.record(tr, grid[i], meas, x, W, no_noise, exact);
+        while (row < row1 && stepOf(row) == k) ++row;  // rows closer than dt share a step
+      }
+      if (k == n_steps) break;
+      if (actuators) {
+        eng.stepHeld(W);
+        if (d.rudder.empty()) advanceRudder(c.model, rudder_demand, dt, eng.yaw());
+      } else {
+        eng.step(W, demand, d.rudder.empty() ? rudder_demand : eng.yaw().rudder_rad);
+      }
+    }
+  }
+  eng.finish(totals);
+}
+
+}  // namespace
+
 SimTrace replay(const VehicleModel& model, const DepthAutopilotConfig& apcfg, const WaterColumn& water,
                 const MissionLog& log, const ReplayOptions& opt) {
   if (!(opt.dt_s > 0.0 && opt.dt_s <= 1.0)) {
@@ -108,105 +259,44 @@ SimTrace replay(const VehicleModel& model, const DepthAutopilotConfig& apcfg, co
   require(log, "prop_rpm", "to turn the propeller");
   require(log, "depth", "for the start depth");
   const ReplayDrive drive = resolveReplayDrive(model, log, opt.drive);
-  const double dt = opt.dt_s;
 
-  // Driving channels on the model grid, sized before the loop.
-  const double t0 = log.time.front();
-  const std::vector<double> grid = uniformGrid(t0, log.time.back(), dt);
-  const long n_steps = static_cast<long>(grid.size()) - 1;
-  const std::vector<double> rpm = onGrid(log, "prop_rpm", grid, Interpolation::kLinear);
-  std::vector<double> elevator, th_front, th_aft, pitch_cmd, depth_cmd, heading_set;
+  Drivers d;
+  d.rpm = GridChannel(log, "prop_rpm", Interpolation::kLinear);
   if (drive == ReplayDrive::Actuators) {
-    elevator = onGrid(log, "elevator", grid, Interpolation::kLinear);
+    d.elevator = GridChannel(log, "elevator", Interpolation::kLinear);
     if (model.thruster_count > 0) {
-      th_front = onGrid(log, "thruster_front_rpm", grid, Interpolation::kLinear);
-      th_aft = onGrid(log, "thruster_aft_rpm", grid, Interpolation::kLinear);
+      d.th_front = GridChannel(log, "thruster_front_rpm", Interpolation::kLinear);
+      d.th_aft = GridChannel(log, "thruster_aft_rpm", Interpolation::kLinear);
     }
   } else {
-    depth_cmd = onGrid(log, "depth_cmd", grid, Interpolation::kHold);
-    if (drive == ReplayDrive::PitchCommands) pitch_cmd = onGrid(log, "pitch_cmd", grid, Interpolation::kLinear);
+    d.depth_cmd = GridChannel(log, "depth_cmd", Interpolation::kHold);
+    if (drive == ReplayDrive::PitchCommands) d.pitch_cmd = GridChannel(log, "pitch_cmd", Interpolation::kLinear);
   }
-  const std::vector<double> rudder = onGrid(log, "rudder", grid, Interpolation::kLinear);
-  if (rudder.empty()) {
-    heading_set = onGrid(log, "heading_cmd", grid, Interpolation::kHold);
-    if (heading_set.empty()) heading_set = onGrid(log, "heading", grid, Interpolation::kLinear);
-  }
-  // One trace sample per log row, at the nearest step.
-  std::vector<char> sample_at(grid.size(), 0);
-  for (double t : log.time) {
-    const long k = std::clamp(std::lround((t - t0) / dt), 0L, n_steps);
-    sample_at[static_cast<std::size_t>(k)] = 1;
+  d.rudder = GridChannel(log, "rudder", Interpolation::kLinear);
+  if (d.rudder.empty()) {
+    d.heading_set = GridChannel(log, "heading_cmd", Interpolation::kHold);
+    if (d.heading_set.empty()) d.heading_set = GridChannel(log, "heading", Interpolation::kLinear);
   }
 
-  const std::vector<double> depth0 = onGrid(log, "depth", {t0}, Interpolation::kLinear);
-  const auto at0 = [&](const char* name, double fallback) {
-    return first(onGrid(log, name, {t0}, Interpolation::kLinear), fallback);
-  };
-  InitialState init;
-  init.depth_m = depth0.front();
-  init.pitch_rad = units::degToRad(at0("pitch", 0.0));
-  init.roll_rad = units::degToRad(at0("roll", 0.0));
-  init.heading_rad = units::degToRad(at0("heading", 0.0));
-  init.speed_mps = at0("speed", 0.0);
-  init.prop_rps = rpm.front() / 60.0;
-
-  StepEngine eng(model, water, dt, opt.surface_model);
-  eng.start(init, opt.loading);
-  const long control_every = std::max(1L, std::lround(apcfg.sample_time_s / dt));
-  DepthAutopilot ap(apcfg, model);
-  HeadingAutopilot hp(apcfg.heading, static_cast<double>(control_every) * dt);
-  ActuatorDemand demand;
-  double rudder_demand = 0.0;
-  GaussianSource no_noise(0);
-  const SensorNoise exact;
-  const double W = eng.weightN();
-
+  const SpanContext ctx{model, apcfg, water, log, opt, drive};
+  const double gap_s = restartGap_s(log.time);
   SimTrace tr;
   tr.reserve(log.rowCount());
-  for (long k = 0; k <= n_steps; ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    if (k > 0) eng.sampleWater();
-    ActuatorState& act = eng.actuators();
-    act.prop_rps = std::max(0.0, rpm[i] / 60.0);
-    if (drive == ReplayDrive::Actuators) {
-      act.plane_rad = -units::degToRad(elevator[i]);  // log sign -> paper sign
-      if (model.thruster_count > 0) {
-        act.thruster_rpm[0] = th_front[i];
-        act.thruster_rpm[1] = th_aft[i];
-      }
-    }
-    if (!rudder.empty()) eng.yaw().rudder_rad = units::degToRad(rudder[i]);
-
-    const Measurement meas = eng.measure(no_noise, exact);
-    const bool control_now = k % control_every == 0;
-    // Without a logged heading the heading hold keeps the start heading.
-    const double heading_cmd = !apcfg.heading.enabled ? kNaN
-                               : heading_set.empty()  ? init.heading_rad
-                                                      : units::degToRad(heading_set[i]);
-    if (control_now && drive != ReplayDrive::Actuators) {
-      Setpoint sp{depth_cmd[i], 0.0, 0.0};
-      if (drive == ReplayDrive::PitchCommands) {
-        sp.pitch_rad = units::degToRad(pitch_cmd[i]);
-        sp.pitch_is_demand = true;
-      }
-      demand = ap.update(meas, sp, eng.water().density_kgm3);
-    }
-    if (control_now && rudder.empty()) rudder_demand = hp.update(heading_cmd, eng.yaw().heading_rad, eng.yaw().r_radps);
-    if (sample_at[i]) {
-      const SampleExtras x{depth_cmd.empty() ? kNaN : depth_cmd[i],
-                           drive == ReplayDrive::Actuators ? kNaN : ap.outputs().pitch_cmd_rad, heading_cmd,
-                           ap.outputs().hover_force_n};
-      eng.record(tr, grid[i], meas, x, W, no_noise, exact);
-    }
-    if (k == n_steps) break;
-    if (drive == ReplayDrive::Actuators) {
-      eng.stepHeld(W);
-      if (rudder.empty()) advanceRudder(model, rudder_demand, dt, eng.yaw());
-    } else {
-      eng.step(W, demand, rudder.empty() ? rudder_demand : eng.yaw().rudder_rad);
-    }
+  bool first_span = true;
+  for (std::size_t row0 = 0; row0 < log.rowCount();) {
+    std::size_t row1 = row0 + 1;
+    while (row1 < log.rowCount() && log.time[row1] - log.time[row1 - 1] <= gap_s) ++row1;
+    SimTrace totals;
+    replaySpan(ctx, d, row0, row1, tr, totals);
+    if (first_span) tr.truth = totals.truth;  // the vehicle as flown from the first row
+    tr.energy_j += totals.energy_j;
+    tr.hotel_energy_j += totals.hotel_energy_j;
+    tr.prop_energy_j += totals.prop_energy_j;
+    tr.thruster_energy_j += totals.thruster_energy_j;
+    tr.fins_energy_j += totals.fins_energy_j;
+    first_span = false;
+    row0 = row1;
   }
-  eng.finish(tr);
   return tr;
 }
 

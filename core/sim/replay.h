@@ -12,8 +12,11 @@
 // pitch, roll, heading and speed, with its autopilot integrators at zero.
 // Driving channels are brought onto the model's time grid before the loop
 // (linear for measurements, hold for commands; a gap holds the last value),
-// so the step loop does not allocate; a grid time that coincides with a log
-// row takes that row's value exactly.
+// a chunk of steps at a time, so memory follows the rows, not the time span;
+// a grid time that coincides with a log row takes that row's value exactly.
+// A gap between rows longer than 20 row spacings (at least 30 s) ends a span:
+// the model restarts from the first row after it (logger drop-outs of days
+// are not flown step by step).
 #include <string>
 
 #include "missionlog/mission_log.h"

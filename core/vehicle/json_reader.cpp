@@ -1,8 +1,12 @@
 #include "vehicle/json_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
+
+#include "vehicle/nearest_key.h"
 
 namespace auv {
 
@@ -10,6 +14,13 @@ JsonReader::JsonReader(const nlohmann::json& node, std::string file, std::string
     : node_(node), file_(std::move(file)), path_(std::move(path)) {}
 
 nlohmann::json JsonReader::parseFile(const std::string& file) {
+  // A folder would read as empty text ("invalid JSON at 1:1") and a FIFO would
+  // block forever: only a regular file is a JSON input.
+  struct stat st {};
+  if (::stat(file.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    throw InputError("", S_ISDIR(st.st_mode) ? "is a folder, not a JSON file" : "is not a regular file (FIFO or device)",
+                     "give the path of the .json file itself", {file, 0, 0});
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) {
     throw InputError("", "cannot open file '" + file + "'",
@@ -40,6 +51,44 @@ nlohmann::json JsonReader::parseText(const std::string& text, const std::string&
     if (pos != std::string::npos) what = what.substr(pos + 2);
     throw InputError("", "invalid JSON (" + what + ")",
                      "fix the syntax at this position", {file, line, col});
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number beyond double range (1e999): the library names the token only.
+    std::string what = e.what();
+    const auto q1 = what.find('\'');
+    const auto q2 = q1 == std::string::npos ? q1 : what.find('\'', q1 + 1);
+    const std::string token = q2 == std::string::npos ? std::string() : what.substr(q1 + 1, q2 - q1 - 1);
+    long line = 1, col = 1;
+    const std::size_t at = token.empty() ? std::string::npos : text.find(token);
+    for (std::size_t i = 0; at != std::string::npos && i < at; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        col = 1;
+      } else {
+        ++col;
+      }
+    }
+    throw InputError("", "number " + (token.empty() ? std::string("") : token + " ") + "is beyond the range of a double",
+                     "write a physical value (e.g. 12.5)", {file, at == std::string::npos ? 0 : line,
+                                                          at == std::string::npos ? 0 : col});
+  }
+}
+
+void JsonReader::refuseUnknownKeys(std::initializer_list<std::string_view> known, std::string_view doc) const {
+  refuseUnknownKeys(std::vector<std::string>(known.begin(), known.end()), doc);
+}
+
+void JsonReader::refuseUnknownKeys(const std::vector<std::string>& known, std::string_view doc) const {
+  if (!node_.is_object()) fail("", "expected a JSON object", "wrap the fields in { }");
+  for (const auto& [key, value] : node_.items()) {
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    const std::string near = nearestKey(key, known);
+    std::string fix = near.empty() ? std::string() : "did you mean " + near + "? ";
+    std::string list;
+    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+    fix += "remove or rename it; the fields allowed here are: " + list;
+    if (!doc.empty()) fix += " (see " + std::string(doc) + ")";
+    const std::string shown = key.size() > 60 ? key.substr(0, 60) + "..." : key;
+    throw InputError(fieldPath(shown), "unknown field", fix, {file_, 0, 0});
   }
 }
 

@@ -5,7 +5,9 @@
 // must be >= 0; ..." instead of a library exception.
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/input_error.h"
@@ -33,6 +35,13 @@ class JsonReader {
   std::vector<double> numbers(const std::string& key) const;
   std::string text(const std::string& key) const;
   std::string text(const std::string& key, const std::string& fallback) const;
+
+  // Strict schema: every key of this object must be in `known`. An unknown key
+  // is refused with the nearest known one ("did you mean installed_kg?") and
+  // the format document (`doc`, an in-repo path) that lists the optional keys,
+  // because a misspelt optional key would otherwise silently take its default.
+  void refuseUnknownKeys(std::initializer_list<std::string_view> known, std::string_view doc) const;
+  void refuseUnknownKeys(const std::vector<std::string>& known, std::string_view doc) const;
 
   const nlohmann::json& node() const { return node_; }
   const std::string& path() const { return path_; }

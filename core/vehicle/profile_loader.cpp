@@ -9,13 +9,19 @@
 namespace auv {
 namespace {
 
+constexpr std::string_view kProfileDoc = "docs/formats/vehicle-profile.md";
+
 Eigen::Vector3d readPointMm(const JsonReader& r) {
+  r.refuseUnknownKeys({"x_mm", "y_mm", "z_mm"}, kProfileDoc);
   return {units::mmToM(r.numberIn("x_mm", -1e5, 1e5)), units::mmToM(r.numberIn("y_mm", -1e5, 1e5)),
           units::mmToM(r.numberIn("z_mm", -1e5, 1e5, 0.0))};
 }
 
 HullModel readHull(const JsonReader& root, double mass_kg) {
   const JsonReader h = root.child("hull");
+  h.refuseUnknownKeys({"length_m", "diameter_m", "volume_m3", "weight_in_water_kg", "weighing_density_kgm3",
+                       "reference_temperature_degC", "thermal_expansion_per_degC", "compressibility_per_dbar"},
+                      kProfileDoc);
   HullModel hull;
   hull.length_m = h.numberIn("length_m", 0.1, 100.0);
   hull.diameter_m = h.numberIn("diameter_m", 0.01, 20.0);
@@ -53,6 +59,12 @@ namespace {
 
 VehicleProfile fromJson(const nlohmann::json& doc, const std::string& file) {
   const JsonReader root(doc, file);
+  // The sections after "spec" belong to specialised modules (weighing, Slocum
+  // layout, glider flight, simulator, model check), which read them by name.
+  root.refuseUnknownKeys({"id", "name", "kind", "source", "comment", "mass_in_air_kg", "hull", "cb_mm", "cg_mm", "bg_mm",
+                          "adjustment_points", "weight_kit", "spec", "weighing", "slocum", "glider_flight",
+                          "flight_model", "hydrodynamics", "actuators", "sim_assumptions", "autopilot", "model_check"},
+                         kProfileDoc);
   VehicleProfile v;
   v.file = file;
   v.id = root.text("id");
@@ -71,18 +83,21 @@ VehicleProfile fromJson(const nlohmann::json& doc, const std::string& file) {
   std::set<std::string> names;
   if (root.has("adjustment_points")) {
     for (const auto& p : root.array("adjustment_points")) {
+      p.refuseUnknownKeys({"name", "label", "x_mm", "y_mm", "z_mm", "capacity_kg"}, kProfileDoc);
       AdjustmentPoint ap;
       ap.name = p.text("name");
       if (!names.insert(ap.name).second) {
         p.fail("name", "duplicate adjustment point '" + ap.name + "'", "give every point a unique name");
       }
       ap.label = p.text("label", ap.name);
-      ap.position_m = readPointMm(p);
+      ap.position_m = {units::mmToM(p.numberIn("x_mm", -1e5, 1e5)), units::mmToM(p.numberIn("y_mm", -1e5, 1e5)),
+                       units::mmToM(p.numberIn("z_mm", -1e5, 1e5, 0.0))};
       ap.capacity_kg = p.numberIn("capacity_kg", 0.0, 1e4);
       v.points.push_back(ap);
     }
   }
   if (auto kit = root.optionalChild("weight_kit")) {
+    kit->refuseUnknownKeys({"pieces_kg", "optional_pieces_kg"}, kProfileDoc);
     v.kit.pieces_kg = kit->numbers("pieces_kg");
     if (kit->has("optional_pieces_kg")) v.kit.optional_pieces_kg = kit->numbers("optional_pieces_kg");
     for (double m : v.kit.pieces_kg) {
@@ -96,6 +111,8 @@ VehicleProfile fromJson(const nlohmann::json& doc, const std::string& file) {
     std::sort(v.kit.pieces_kg.begin(), v.kit.pieces_kg.end());
   }
   if (auto spec = root.optionalChild("spec")) {
+    spec->refuseUnknownKeys({"net_buoyancy_min_kg", "net_buoyancy_max_kg", "pitch_tolerance_deg", "roll_tolerance_deg"},
+                            kProfileDoc);
     v.spec.net_buoyancy_min_kg = spec->numberIn("net_buoyancy_min_kg", -100.0, 100.0, 0.0);
     v.spec.net_buoyancy_max_kg = spec->numberIn("net_buoyancy_max_kg", -100.0, 100.0, 1.2);
     v.spec.pitch_tolerance_deg = spec->numberIn("pitch_tolerance_deg", 0.0, 45.0, 0.5);
@@ -103,6 +120,9 @@ VehicleProfile fromJson(const nlohmann::json& doc, const std::string& file) {
     if (v.spec.net_buoyancy_max_kg < v.spec.net_buoyancy_min_kg) {
       spec->fail("net_buoyancy_max_kg", "is below net_buoyancy_min_kg", "swap or correct the band");
     }
+  }
+  if (auto w = root.optionalChild("weighing")) {
+    w->refuseUnknownKeys({"method", "rope_y_m", "scale_resolution_kg", "sum_tolerance_kg"}, kProfileDoc);
   }
   // Everything else that is an object belongs to a specialised module.
   static const std::set<std::string> generic = {"hull", "cb_mm", "cg_mm", "weight_kit", "spec"};

@@ -43,6 +43,9 @@ VehicleProfile VehicleCatalog::load(const std::string& id_or_path) const {
 void mergeCompanionSections(VehicleProfile& v, const std::string& companion_file) {
   if (v.sections.contains("hydrodynamics") || !fs::exists(companion_file)) return;
   const nlohmann::json doc = JsonReader::parseFile(companion_file);
+  JsonReader(doc, companion_file)
+      .refuseUnknownKeys({"vehicle", "source", "comment", "hydrodynamics", "actuators", "sim_assumptions", "autopilot"},
+                         "docs/formats/vehicle-profile.md");
   for (const auto& [key, value] : doc.items()) {
     if (value.is_object() && !v.sections.contains(key)) v.sections[key] = value;
   }

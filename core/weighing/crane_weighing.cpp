@@ -53,8 +53,13 @@ CraneResult weighCrane(const CraneWeighing& in) {
   r.sum_mismatch_kg = parts - in.total_kg;
   const double mismatch = std::abs(r.sum_mismatch_kg);
   if (mismatch > 5.0 * in.sum_tolerance_kg) {
-    throw InputError("scales", "the four readings add up to " + kg(parts) + " but the total is " + kg(in.total_kg),
-                     "re-read the scales; they must agree within " + kg(in.sum_tolerance_kg));
+    // Up to 5x the tolerance is accepted with a warning (below); say so, so
+    // the refusal and the acceptance are one rule.
+    throw InputError("scales",
+                     "the four readings add up to " + kg(parts) + " but the total is " + kg(in.total_kg) + " (" +
+                         kg(mismatch) + " apart, more than 5 x the " + kg(in.sum_tolerance_kg) + " tolerance)",
+                     "re-read the scales; they must agree within " + kg(5.0 * in.sum_tolerance_kg) +
+                         " to be used (within " + kg(in.sum_tolerance_kg) + " without a warning)");
   }
   if (mismatch > in.sum_tolerance_kg) {
     r.warnings.push_back("the four readings add up to " + kg(parts) + ", total is " + kg(in.total_kg) +

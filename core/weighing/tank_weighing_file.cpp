@@ -18,13 +18,8 @@ double grams(const JsonReader& r, const std::string& key, double hi, double fall
 
 // Optional fields have defaults, so a typo ("lever_arm" for "lever_arm_m")
 // would silently use the default: refuse names we do not know.
-void rejectUnknown(const JsonReader& r, std::initializer_list<std::string> known) {
-  for (const auto& [key, value] : r.node().items()) {
-    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-    std::string list;
-    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    r.fail(key, "unknown field", "use one of: " + list);
-  }
+void rejectUnknown(const JsonReader& r, std::initializer_list<std::string_view> known) {
+  r.refuseUnknownKeys(known, "docs/formats/slocum-tank-weighing.md");
 }
 
 SlocumBallast readBallast(const JsonReader& b) {

@@ -204,3 +204,49 @@ TEST(PlanCli, ModelCheckAcceptIntoAnUnknownConfigurationIsRefused) {
 }
 
 }  // namespace auv
+
+namespace auv {
+// issue 15: the CLI can create a configuration (first-mission --config
+// --history), plan then starts from what it recorded, and --accept for a
+// configuration the history does not hold is refused with that command.
+TEST(PlanCli, FirstMissionCreatesTheConfigurationThatPlanAccepts) {
+  const std::string h = tempPath("first_mission.sqlite");
+  const std::string weighing = std::string(AUV_RESOURCE_DIR) + "/examples/hugin1000_first_mission.json";
+  auto r = runCli("plan --vehicle hugin1000 --config 4-5-6 --report " + analysisReport() +
+                  " --installed 14.4,14.4,19.2,19.2 --temperature 8 --salinity 35 --depth 50 --accept --history " + h);
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.err.find("'4-5-6' is not in the history"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("first-mission --weighing FILE.json --config 4-5-6 --history " + h), std::string::npos) << r.err;
+
+  r = runCli("first-mission --weighing " + weighing + " --config 4-5-6 --history " + h + " --json -");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const double weight_kg = parse(r)["weight_kg"].get<double>();
+  r = runCli("first-mission --weighing " + weighing + " --config 4-5-6 --history " + h);
+  EXPECT_EQ(r.code, 2);  // an existing ID is never overwritten
+  EXPECT_NE(r.err.find("already exists"), std::string::npos) << r.err;
+
+  // Installed pieces and the vehicle's mass now come from the history.
+  r = runCli("plan --vehicle hugin1000 --config 4-5-6 --report " + analysisReport() +
+             " --temperature 8 --salinity 35 --depth 50 --accept --json - --history " + h);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(parse(r)["sources"]["installed"], "history");
+  r = runCli("history --config 4-5-6 --json - --history " + h);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string listing = r.out;
+  EXPECT_NE(listing.find("14.4"), std::string::npos);  // the weighed state (the crane file's installed_kg)
+  char total[32];
+  std::snprintf(total, sizeof total, "%.1f", weight_kg);
+  EXPECT_NE(listing.find(std::string(total).substr(0, 4)), std::string::npos) << listing.substr(0, 2000);
+}
+
+TEST(PlanCli, ReportOfAnotherVehicleIsRefused) {
+  const std::string p = tempPath("glider_report.json");
+  writeFile(p, R"({"vehicle": "slocum_g2", "vehicle_kind": "glider", "net_buoyancy_kg": 0.1,
+    "net_buoyancy_sigma_kg": 0.01, "water": {"temperature_degC": 8.0, "salinity_psu": 35.0, "depth_m": 50.0}})");
+  const auto r = runCli("plan --vehicle hugin1000 --config 1-2-3 --report " + p +
+                        " --installed 0,0,0,0 --no-save --temperature 8 --salinity 35");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.err.find(p), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("analyses vehicle 'slocum_g2', not 'hugin1000'"), std::string::npos) << r.err;
+}
+}  // namespace auv

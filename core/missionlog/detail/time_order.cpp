@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/input_error.h"
 #include "missionlog/detail/report_problem.h"
 #include "missionlog/detail/table_rows.h"
 
@@ -80,6 +81,17 @@ void repairTimeOrder(LogTable& table, const ReadOptions& options, ReadReport& re
                   rowPrefix(table, i) + "time " + timeText(t[i], table.epoch) + " repeats " + rowName(table, p) +
                       "; merged into that row (its empty cells filled from this one)",
                   "time must be strictly increasing; remove repeated rows");
+  }
+  // Fewer than two rows left: say it is the time column, not "no depth".
+  const auto kept = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1));
+  if (kept < 2 && n >= 2) {
+    throw InputError("time",
+                     ordered ? "all " + std::to_string(n) + " rows have the same time " + timeText(t[0], table.epoch)
+                             : "the times of the " + std::to_string(n) +
+                                   " rows go backwards (no two rows in increasing order)",
+                     "time must increase strictly from row to row (seconds since `# start:`, or a date and time); "
+                     "check the time column and its format",
+                     rowLocation(table, 1));
   }
   keepRows(table, keep);
 }

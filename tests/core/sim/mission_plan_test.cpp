@@ -71,7 +71,8 @@ TEST(MissionPlan, BallastErrorPlanCarriesItsKnownError) {
     (void)resolveScenario(plan, delphin);  // 4 masses for 2 points
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.field(), "installed");
+    EXPECT_EQ(e.field(), "installed_kg");  // the plan's field, in the plan file
+    EXPECT_EQ(e.where().file, plan.file);
   }
 }
 
