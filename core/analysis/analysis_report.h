@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/calibration_parameter.h"
 #include "analysis/segments.h"
 #include "analysis/statistics.h"
 
@@ -71,6 +72,10 @@ struct AnalysisReport {
   // Water at operating depth (in situ).
   MeanEstimate temperature_degC, salinity_psu, density_kgm3, pressure_dbar, depth_m;
   std::string salinity_source, density_source;
+
+  // Vehicle constants the analysis calibrated with the ballast state (JSON
+  // `calibration`), empty when there was nothing to calibrate.
+  std::vector<CalibrationParameter> calibration;
 
   std::vector<SegmentReport> segments;  // phases, then operating windows, in time order
   std::vector<std::string> warnings;

@@ -23,7 +23,9 @@ struct AnalysisOptions {
   std::optional<double> bg_m;        // CG below CB from an inclining/roll test (--bg-mm)
   std::optional<double> target_density_kgm3;  // gliders: default = mean in-situ density below glider_min_depth_m
   SegmentOptions segments;           // `glider` is set from the vehicle kind
-  double coefficient_rel_sigma = 0.10;
+  // Prior width of each hydrodynamic derivative group in the calibration
+  // (--coefficient-sigma); unset = 30 % and an unknown Munk structure.
+  std::optional<double> coefficient_rel_sigma;
   double bg_profile_rel_sigma = 0.25;
   double default_density_kgm3 = 1025.0;  // only when the log has no CTD
   // Gliders

@@ -118,10 +118,12 @@ void attitudeSigmas(const BallastProblem& pr, const std::vector<std::vector<int>
 void predictFlightPitch(const VehicleProfile& v, const TrimEstimate& e, const EstimatedVehicle& ev,
                         const BallastSolution& sol, PreMissionPlan& out) {
   const PlannedPointResult& op = out.at_points.front();
-  out.flight_pitch_before_deg = flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg, ev.mass.cg_m, op);
+  out.flight_pitch_before_deg =
+      flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg, ev.mass.cg_m, op, e.calibrated_hydrodynamics);
   double added = 0.0;
   for (const auto& p : out.points) added += p.add_kg;
-  out.flight_pitch_after_deg = flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg + added, sol.cg_m, op);
+  out.flight_pitch_after_deg =
+      flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg + added, sol.cg_m, op, e.calibrated_hydrodynamics);
   if (!out.flight_pitch_after_deg) return;
   out.flight_speed_mps = e.cruise_speed_mps;
   out.flight_pitch_in_band = std::abs(*out.flight_pitch_after_deg) <= v.spec.pitch_tolerance_deg;
@@ -269,6 +271,20 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     out.delta = classicMove(v, in, pr, out);
     sol = evaluateMove(pr, out.delta);
   } else {
+    // Level flight at zero pitch needs W x_G = l (B - W) (planes carry the
+    // net buoyancy, the hull no lift): with the calibrated model the solver
+    // aims the CG there rather than over the CB, so the vehicle flies level
+    // at every speed (thesis §5.3.2 judges pitch in flight).
+    if (in.estimate.calibrated_hydrodynamics) {
+      if (const std::optional<double> l = planeLeverM(v, in.estimate.calibrated_hydrodynamics)) {
+        const double net_aim = 0.5 * (out.band_lo_kg + out.band_hi_kg);
+        // The mass after the move is not known before solving; a few kg in
+        // 1500 change x by < 0.5 %.
+        const double dx = *l * net_aim / out.vehicle.mass.mass_kg;
+        pr.cb_m.x() += dx;
+        out.details["flight_level_cg_x_mm"] = units::mToMm(pr.cb_m.x() - v.cb_m.x());
+      }
+    }
     // No kit total inside [lo, hi]: the solver would take the nearest, which
     // may lie under the safety margin. Widen the band upward, one smallest
     // piece at a time, until the answer is safe or nothing more is removable.
@@ -281,6 +297,11 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     out.delta = sol.delta;
     out.notes = sol.notes;
     out.warnings = sol.warnings;
+  }
+  if (pr.cb_m.x() != v.cb_m.x()) {
+    // Report the attitude at rest about the real CB.
+    pr.cb_m = v.cb_m;
+    sol = evaluateMove(pr, out.delta);
   }
   fillPoints(pr, out.delta, out);
   out.predicted.net_buoyancy_kg = sol.net_buoyancy_kg;

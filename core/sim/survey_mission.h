@@ -19,7 +19,9 @@ struct SurveyRanges {
   int speeds_min = 2, speeds_max = 3;
   int depths_min = 2, depths_max = 3;
   double rpm_min = 110.0, rpm_max = 190.0, rpm_spacing = 20.0;
-  double depth_min_m = 25.0, depth_max_m = 150.0, depth_spacing_m = 20.0;
+  // Shallow enough that the band at depth and a floating vehicle at the
+  // surface can both hold with an incompressible hull (planning-safety-margin.md).
+  double depth_min_m = 20.0, depth_max_m = 90.0, depth_spacing_m = 15.0;
   double line_min_s = 600.0, line_max_s = 1500.0;
   double trace_interval_s = 1.0;
 };
