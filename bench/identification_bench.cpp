@@ -89,6 +89,7 @@ int main(int argc, char** argv) {
   std::vector<double> en, ex, ey;
   int known = 0, cov_n = 0, cov_x = 0, cov_y = 0, y_known = 0;
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;
+  int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0;
   std::map<std::string, int> identified;
   for (int i = 0; i < truths; ++i) {
     const identification::CaseResult r = h.run(seed + static_cast<std::uint64_t>(i), loop);
@@ -96,13 +97,12 @@ int main(int argc, char** argv) {
       std::printf("%s | %d speeds %d depths | net %+.3f (s %.3f) x %+.2f (s %.2f) mm y %+.3f (s %.3f) mm%s\n",
                   r.truth.describe().c_str(), r.speeds, r.depths, r.net_err_kg, r.net_sigma_kg, r.x_err_mm,
                   r.x_sigma_mm, r.y_err_mm, r.y_sigma_mm,
-                  r.looped ? (std::string(" | log speeds ") + std::to_string(r.log_rpms.size()) + " | plan band " +
-                              std::to_string(r.plan_band_lo_kg) + ".." + std::to_string(r.plan_band_hi_kg) + " net " +
-                              std::to_string(r.plan_net_kg) + " | after: net op " +
-                              std::to_string(r.net_op_after_kg) + " mean " +
-                              std::to_string(r.net_after_kg) + " (min " + std::to_string(r.min_net_after_kg) +
-                              ") pitch " + std::to_string(r.pitch_after_deg) + " roll " +
-                              std::to_string(r.roll_after_deg) + (r.spec ? " SPEC" : " miss"))
+                  r.looped ? (std::string(" | log speeds ") + std::to_string(r.log_rpms.size()) + " | one move: net " +
+                              std::to_string(r.one.net_op_kg) + " (min " + std::to_string(r.one.min_net_kg) + ") pitch " +
+                              std::to_string(r.one.pitch_deg) + " roll " + std::to_string(r.one.roll_deg) +
+                              (r.one.spec ? " SPEC" : " miss") + " | two: net " + std::to_string(r.two.net_op_kg) +
+                              " pitch " + std::to_string(r.two.pitch_deg) + " roll " + std::to_string(r.two.roll_deg) +
+                              (r.two.spec ? " SPEC" : " miss"))
                                  .c_str()
                            : "");
     for (const auto& q : r.calibration) identified[q.id] += q.identified ? 1 : 0;
@@ -120,8 +120,11 @@ int main(int argc, char** argv) {
     }
     if (r.looped) {
       ++looped;
-      spec += r.spec, net_ok += r.net_ok, pitch_ok += r.pitch_ok, roll_ok += r.roll_ok, safe += r.safe;
-      if (r.log_rpms.size() >= 3) ++n3, spec3 += r.spec;
+      spec += r.one.spec, net_ok += r.one.net_ok, pitch_ok += r.one.pitch_ok, roll_ok += r.one.roll_ok,
+          safe += r.one.safe;
+      spec2 += r.two.spec, net2 += r.two.net_ok, pitch2 += r.two.pitch_ok, roll2 += r.two.roll_ok,
+          safe2 += r.two.safe && r.one.safe;
+      if (r.log_rpms.size() >= 3) ++n3, spec3 += r.one.spec, spec23 += r.two.spec;
     }
   }
   std::printf("identification bench: %d truths (seed %llu), estimates for %d\n", truths,
@@ -136,6 +139,10 @@ int main(int argc, char** argv) {
   if (loop)
     std::printf("  one move: spec %d of %d (logs with >= 3 steady speeds: %d of %d); net %d, pitch %d, roll %d; never negative %d of %d\n",
                 spec, looped, spec3, n3, net_ok, pitch_ok, roll_ok, safe, looped);
+  if (loop)
+    std::printf("  two moves (second from the joint history calibration): spec %d of %d (>= 3 steady speeds: %d of %d); "
+                "net %d, pitch %d, roll %d; never negative in either %d of %d\n",
+                spec2, looped, spec23, n3, net2, pitch2, roll2, safe2, looped);
   if (timing) {
     std::printf("  analysis + calibration, 3 h at 1 Hz: %.3f s\n", timeAnalysis(h, 3 * 3600.0, 1.0));
     std::printf("  analysis + calibration, 24 h at 10 Hz: %.3f s\n", timeAnalysis(h, 24 * 3600.0, 0.1));

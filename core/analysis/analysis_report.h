@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/auv_trim_estimation.h"
 #include "analysis/calibration_parameter.h"
 #include "analysis/segments.h"
 #include "analysis/statistics.h"
@@ -76,6 +77,9 @@ struct AnalysisReport {
   // Vehicle constants the analysis calibrated with the ballast state (JSON
   // `calibration`), empty when there was nothing to calibrate.
   std::vector<CalibrationParameter> calibration;
+  // AUVs: the steady segments the estimate used, with their absolute
+  // buoyancy, so a later mission can calibrate from this one (typed, not JSON).
+  std::vector<SteadySegmentMeans> steady_segments;
 
   std::vector<SegmentReport> segments;  // phases, then operating windows, in time order
   std::vector<std::string> warnings;

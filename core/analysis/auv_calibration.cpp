@@ -30,7 +30,7 @@ void rowsOf(const SteadyHydroCoefficients& c, double W, double rho_ref, const Ca
   A(0, kHeave) = -kZw * au * w;
   A(0, kCrossflow) = -c.Zww_kg_per_m * std::abs(w) * w;
   A(1, kXg) = W * cc;
-  A(1, kBg) = W * std::sin(th);
+  A(1, kBg) = (s.weight_n > 0.0 ? s.weight_n : W) * std::sin(th);
   A(1, kPitchUw) = -rho_ratio * u * w;
   A(1, kCrossflow) = -c.Mww_kg * std::abs(w) * w;
   if (c.has_planes) {
@@ -39,7 +39,7 @@ void rowsOf(const SteadyHydroCoefficients& c, double W, double rho_ref, const Ca
     A(1, kPlanes) = -c.M_e_per_deg * uu * v[kElev];
     A(1, kPlaneOffset) = c.M_e_per_deg * uu;
   }
-  b << -s.buoyancy_change_n * cc, 0.0;
+  b << -s.buoyancy_change_n * cc, -s.moment_offset_nm * cc;
 }
 
 struct Solved {

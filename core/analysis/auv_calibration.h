@@ -44,6 +44,12 @@ struct CalibrationSegment {
   std::array<double, 5> v{}, se{};
   double density_kgm3 = 1025.0;
   double buoyancy_change_n = 0.0;  // B_i - B_reference from density and hull law (known)
+  // A segment of an earlier mission of the same configuration (history,
+  // issue 11 item 3): its weight, and the known moment of the pieces moved
+  // since, W_now x_now = W_then x_then + moment, so moment_offset_nm = -moment.
+  // Its known mass change is inside buoyancy_change_n.
+  double weight_n = 0.0;  // 0 = the current mission's
+  double moment_offset_nm = 0.0;
 };
 
 enum CalibrationIndex { kNet = 0, kXg, kHeave, kPitchUw, kCrossflow, kPlanes, kPlaneOffset, kBg, kCalibrationCount };

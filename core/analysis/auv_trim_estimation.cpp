@@ -335,9 +335,28 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     c.se = meas[j].se;
     c.density_kgm3 = std::isfinite(g.density_kgm3) ? g.density_kgm3 : ctx.density_kgm3;
     c.buoyancy_change_n = std::isfinite(g.buoyancy_change_n) ? g.buoyancy_change_n : 0.0;
+    c.weight_n = g.weight_n;
+    c.moment_offset_nm = g.moment_offset_nm;
     cs.push_back(c);
   }
+  std::size_t history_used = 0;
+  for (const SteadySegmentMeans& g : ctx.history) {
+    if (!g.speed_mps.valid() || !g.pitch_deg.valid() || (use_elevator && !g.elevator_deg.valid())) continue;
+    const Meas hm = measOf(g, use_elevator);
+    CalibrationSegment c;
+    c.v = hm.v;
+    c.se = hm.se;
+    c.density_kgm3 = std::isfinite(g.density_kgm3) ? g.density_kgm3 : ctx.density_kgm3;
+    c.buoyancy_change_n = g.buoyancy_change_n;
+    c.weight_n = g.weight_n;
+    c.moment_offset_nm = g.moment_offset_nm;
+    cs.push_back(c);
+    ++history_used;
+  }
   const SteadyCalibration cal = calibrateSteady(*coeffs, m.W, m.rho, cs, pri);
+  if (history_used > 0)
+    out.notes.push_back("calibrated with " + std::to_string(history_used) +
+                        " steady segments of earlier missions of this configuration and the known weight changes since");
   if (!cal.ok) {
     notIdentifiable("the steady segments do not determine the heave and pitch balance (degenerate geometry)");
     return out;

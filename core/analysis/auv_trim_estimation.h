@@ -28,6 +28,10 @@ struct SteadySegmentMeans {
   // another depth is a known change of the net buoyancy.
   double density_kgm3 = std::numeric_limits<double>::quiet_NaN();
   double buoyancy_change_n = 0.0;
+  double buoyancy_n = std::numeric_limits<double>::quiet_NaN();  // rho_i V_i g, absolute
+  // History segments only (see CalibrationSegment): set by the caller.
+  double weight_n = 0.0, moment_offset_nm = 0.0;
+  bool from_history = false;
 };
 
 struct AuvTrimContext {
@@ -48,6 +52,10 @@ struct AuvTrimContext {
     double diameter_m = 0.0, c1 = 1.0, c2 = 1.0, wake_fraction = 0.0;
   };
   std::optional<PropellerLaw> propeller;
+  // Steady segments of earlier missions of this configuration with their
+  // known weight changes (calibration from the history): they share the
+  // vehicle's hydrodynamics, not its roll.
+  std::vector<SteadySegmentMeans> history;
   // Propeller torque at 100 rpm the profile assumes (sim_assumptions), N m; 0 = none.
   double profile_torque_nm_per_100rpm2 = 0.0;
   double min_speed2_spread = 1.3;       // max(u^2)/min(u^2) needed to fit the elevator zero offset

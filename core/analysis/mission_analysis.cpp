@@ -363,14 +363,15 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     const bool perWindowWater = water.win_rho.size() == nw && water.rho.valid();
     const double Tref = water.T.valid() ? water.T.mean : v.hull.reference_temperature_degC;
     const double pref = water.p.valid() ? water.p.mean : 0.0;
-    const double Bref = rho * v.hull.volumeAt(Tref, pref);
+    const double Bref = rho * v.hull.volumeAt(Tref, pref);  // kg
     for (std::size_t w = 0; w < nw; ++w) {
       means[w] = {win[w].start_s, win[w].end_s, speed.at(w), pitch.at(w), roll.at(w), elev.at(w), zRate.at(w), rpm.at(w)};
       if (perWindowWater && std::isfinite(water.win_rho[w])) {
         const double Ti = std::isfinite(water.win_T[w]) ? water.win_T[w] : Tref;
         const double pi = std::isfinite(water.win_p[w]) ? water.win_p[w] : pref;
         means[w].density_kgm3 = water.win_rho[w];
-        means[w].buoyancy_change_n = units::g0 * (water.win_rho[w] * v.hull.volumeAt(Ti, pi) - Bref);
+        means[w].buoyancy_n = units::g0 * water.win_rho[w] * v.hull.volumeAt(Ti, pi);
+        means[w].buoyancy_change_n = means[w].buoyancy_n - units::g0 * Bref;
       }
     }
     AuvTrimContext ctx;
@@ -385,7 +386,33 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     ctx.log_has_speed = hasSamples(log, "speed");
     ctx.log_has_elevator = hasSamples(log, "elevator");
     ctx.log_has_rpm = hasSamples(log, "prop_rpm");
+    // History: the same vehicle with other pieces. Its segments join the
+    // calibration with the known mass and moment changes since.
+    for (const HistoryMission& h : o.history) {
+      if (!h.installed_kg.empty() && h.installed_kg.size() != v.points.size())
+        throw InputError("history.installed", "has " + std::to_string(h.installed_kg.size()) + " values",
+                         "give one kg value per adjustment point, in profile order");
+      double dm = 0.0, moment = 0.0, then = 0.0;
+      for (std::size_t i = 0; i < v.points.size(); ++i) {
+        const double now_i = o.installed_kg.empty() ? 0.0 : o.installed_kg[i];
+        const double then_i = h.installed_kg.empty() ? 0.0 : h.installed_kg[i];
+        then += then_i;
+        dm += now_i - then_i;
+        moment += units::g0 * (now_i - then_i) * (v.points[i].position_m.x() - v.cb_m.x());
+      }
+      for (SteadySegmentMeans s : h.segments) {
+        if (!std::isfinite(s.buoyancy_n)) continue;
+        s.buoyancy_change_n = s.buoyancy_n - units::g0 * Bref + units::g0 * dm;
+        s.weight_n = (v.mass_kg + then) * units::g0;
+        s.moment_offset_nm = -moment;
+        s.from_history = true;
+        ctx.history.push_back(s);
+      }
+    }
     const AuvTrimEstimate e = estimateAuvTrim(means, coeffs ? &*coeffs : nullptr, why, ctx);
+    for (std::size_t w = 0; w < nw; ++w)
+      if (std::isfinite(e.segment_net_buoyancy_kg.empty() ? kNaN : e.segment_net_buoyancy_kg[w]))
+        rep.steady_segments.push_back(means[w]);
     rep.net_buoyancy_kg = {e.buoyancy_identified, e.buoyancy_identified ? e.net_buoyancy_kg : kNaN,
                            e.buoyancy_identified ? e.net_buoyancy_sigma_kg : kNaN, e.buoyancy_why};
     rep.cg_x_mm = {e.x_identified, e.x_identified ? units::mToMm(e.x_m) : kNaN,

@@ -10,12 +10,20 @@
 #include <vector>
 
 #include "analysis/analysis_report.h"
+#include "analysis/auv_trim_estimation.h"
 #include "analysis/glider_flight.h"
 #include "analysis/segments.h"
 #include "missionlog/mission_log.h"
 #include "vehicle/vehicle_profile.h"
 
 namespace auv::analysis {
+
+// An earlier analysed mission of the same configuration: its steady
+// segments (AnalysisReport::steady_segments) and what was installed then.
+struct HistoryMission {
+  std::vector<SteadySegmentMeans> segments;
+  std::vector<double> installed_kg;
+};
 
 struct AnalysisOptions {
   std::string log_name;
@@ -38,6 +46,9 @@ struct AnalysisOptions {
   double glider_pitch_bias_sigma_deg = 0.5;
   GliderFitOptions glider_fit;
   bool classic = true;
+  // AUVs: earlier missions of this configuration; with a known weight change
+  // between them they calibrate the hydrodynamics jointly (issue 11 item 3).
+  std::vector<HistoryMission> history;
 };
 
 // Throws InputError when the log has no usable depth/pressure or `installed_kg`

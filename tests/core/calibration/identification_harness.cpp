@@ -133,11 +133,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
     }
   if (!closed_loop || !r.known) return r;
 
-  // One move, planned for the same survey in the same water, flown again.
-  PreMissionInput in;
-  in.installed_kg = kInstalled;
-  in.estimate = trimEstimateFromReport(rj, "identification harness");
-  // The next mission: the same survey lines at one operating depth (the
+  // The next missions: the same survey lines at one operating depth (the
   // middle of the surveyed depths), in the same stratified water; the
   // operator gives that depth's water from a CTD cast.
   sim::SurveyMission m2 = m;
@@ -146,39 +142,63 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   m2.scenario.initial_depth_m = op_depth;
   const sim::WaterSample wop = m.water().at(op_depth);
   const PlannedWater next{wop.temperature_degC, wop.salinity_psu, op_depth, 60.0};
-  in.next = nextMissionWater(next, op_depth, "operator");
-  in.next.temperature_sigma_degC = 0.1;  // a CTD cast before launch
-  in.next.salinity_sigma_psu = 0.05;
-  in.policy = PlanPolicy::Exact;
-  in.use_optional_pieces = true;
-  const PreMissionPlan plan = planPreMission(profile_, in);
-  std::vector<double> after = kInstalled;
-  for (std::size_t i = 0; i < after.size(); ++i) after[i] = std::round((after[i] + plan.points[i].add_kg) * 1e4) / 1e4;
-  const std::vector<MassItem> installed2 = sim::installedWeights(profile_, after);
-  // The same vehicle with other pieces: its own (hidden) error stays.
-  const Flown f2 = fly(truth, nominal_.autopilot, m2, installed2, err, seed * 7 + 2, after);
-  const analysis::AnalysisReport rep2 = analyse(f2, profile_, after);
-  r.looped = true;
+  auto planFrom = [&](const nlohmann::json& report, const std::vector<double>& installed_now) {
+    PreMissionInput in;
+    in.installed_kg = installed_now;
+    in.estimate = trimEstimateFromReport(report, "identification harness");
+    in.next = nextMissionWater(next, op_depth, "operator");
+    in.next.temperature_sigma_degC = 0.1;  // a CTD cast before launch
+    in.next.salinity_sigma_psu = 0.05;
+    in.policy = PlanPolicy::Exact;
+    in.use_optional_pieces = true;
+    const PreMissionPlan plan = planPreMission(profile_, in);
+    std::vector<double> after = installed_now;
+    for (std::size_t i = 0; i < after.size(); ++i)
+      after[i] = std::round((after[i] + plan.points[i].add_kg) * 1e4) / 1e4;
+    return std::pair{plan, after};
+  };
+  const TrimSpec& s = profile_.spec;
+  const double y_point = std::abs(profile_.points.front().position_m.y() - profile_.cb_m.y());
+  // Judged as the thesis does, in flight: the band at the operating point
+  // (the planned water), never negative anywhere the mission went, pitch at
+  // steady depth, roll at cruise within 0.1 deg of what the kit reaches (the
+  // smallest lateral step, the 0.5 kg piece at a side point, moves the roll
+  // by atan(0.5 kg |y| / (m BG))).
+  auto judge = [&](const Flown& fl, const analysis::AnalysisReport& rp, CaseResult::Outcome& o) {
+    o.net_op_kg = resolvePoint(profile_.hull, next).displaced_kg - fl.mass_kg;
+    o.min_net_kg = fl.min_net_kg;
+    o.pitch_deg = rp.pitch_at_steady_depth_deg.mean;
+    o.roll_deg = rp.cruise_roll_deg.known ? rp.cruise_roll_deg.value : rp.roll_deg.mean;
+    o.roll_reach_deg = units::radToDeg(std::atan(0.5 * y_point / (fl.mass_kg * fl.bg_m)));
+    o.net_ok = o.net_op_kg >= s.net_buoyancy_min_kg && o.net_op_kg <= s.net_buoyancy_max_kg;
+    o.pitch_ok = std::abs(o.pitch_deg) <= s.pitch_tolerance_deg;
+    o.roll_ok = std::abs(o.roll_deg) <= s.roll_tolerance_deg + 0.5 * o.roll_reach_deg;
+    o.safe = o.min_net_kg >= 0.0;
+    o.spec = o.net_ok && o.pitch_ok && o.roll_ok && o.safe;
+  };
+  // One move from the survey's analysis. The same vehicle with other pieces:
+  // its own (hidden) error stays.
+  const auto [plan, after] = planFrom(rj, kInstalled);
   r.plan_band_lo_kg = plan.band_lo_kg;
   r.plan_band_hi_kg = plan.band_hi_kg;
   r.plan_net_kg = plan.predicted.net_buoyancy_kg;
-  r.net_after_kg = f2.mean_net_kg;
-  r.min_net_after_kg = f2.min_net_kg;
-  r.pitch_after_deg = rep2.pitch_at_steady_depth_deg.mean;
-  r.roll_after_deg = rep2.cruise_roll_deg.known ? rep2.cruise_roll_deg.value : rep2.roll_deg.mean;
-  // What the kit reaches in roll: the smallest lateral step (the 0.5 kg piece
-  // at a side point) moves the roll by atan(0.5 kg * |y| / (m BG)); the spec's
-  // 0.1 deg applies around the nearest reachable roll.
-  const double y_point = std::abs(profile_.points.front().position_m.y() - profile_.cb_m.y());
-  r.roll_reach_deg = units::radToDeg(std::atan(0.5 * y_point / (f2.mass_kg * f2.bg_m)));
-  const TrimSpec& s = profile_.spec;
-  // The band holds at the operating point (the planned water), safety everywhere the survey went.
-  r.net_op_after_kg = resolvePoint(profile_.hull, next).displaced_kg - f2.mass_kg;
-  r.net_ok = r.net_op_after_kg >= s.net_buoyancy_min_kg && r.net_op_after_kg <= s.net_buoyancy_max_kg;
-  r.pitch_ok = std::abs(r.pitch_after_deg) <= s.pitch_tolerance_deg;
-  r.roll_ok = std::abs(r.roll_after_deg) <= s.roll_tolerance_deg + 0.5 * r.roll_reach_deg;
-  r.safe = r.min_net_after_kg >= 0.0;
-  r.spec = r.net_ok && r.pitch_ok && r.roll_ok && r.safe;
+  const Flown f2 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after), err, seed * 7 + 2, after);
+  // Mission 2 analysed with mission 1 as history (the known move calibrates).
+  analysis::AnalysisOptions a2;
+  a2.log_name = "identification, second mission";
+  a2.installed_kg = after;
+  a2.bg_m = f2.bg_m;
+  a2.history = {{rep.steady_segments, kInstalled}};
+  const analysis::AnalysisReport rep2 = analysis::analyzeMission(f2.log, profile_, a2);
+  r.looped = true;
+  judge(f2, rep2, r.one);
+  if (!rep2.net_buoyancy_kg.known) return r;
+  // The second move, planned from the jointly calibrated second mission.
+  const auto [plan2, after2] = planFrom(analysis::toJson(rep2), after);
+  const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2);
+  judge(f3, analyse(f3, profile_, after2), r.two);
+  r.net2_err_kg = rep2.net_buoyancy_kg.value - (rep2.density_kgm3.mean * profile_.hull.volumeAt(rep2.temperature_degC.mean, rep2.pressure_dbar.mean) - f2.mass_kg);
+  r.net2_sigma_kg = rep2.net_buoyancy_kg.sigma;
   return r;
 }
 

@@ -26,11 +26,17 @@ struct CaseResult {
   double y_err_mm = 0.0, y_sigma_mm = 0.0;
   double analysis_s = 0.0;
   std::vector<analysis::CalibrationParameter> calibration;
-  // Closed loop after one move (the same survey flown again with the moved pieces).
-  bool looped = false, spec = false, net_ok = false, pitch_ok = false, roll_ok = false, safe = false;
+  // Closed loop: the survey's lines flown again at one depth after one
+  // move, and after a second move planned from that mission analysed with
+  // the first as history.
+  struct Outcome {
+    bool spec = false, net_ok = false, pitch_ok = false, roll_ok = false, safe = false;
+    double net_op_kg = 0.0, min_net_kg = 0.0, pitch_deg = 0.0, roll_deg = 0.0, roll_reach_deg = 0.0;
+  };
+  bool looped = false;
   double plan_band_lo_kg = 0.0, plan_band_hi_kg = 0.0, plan_net_kg = 0.0;
-  double net_op_after_kg = 0.0;  // truth at the planned operating water
-  double net_after_kg = 0.0, min_net_after_kg = 0.0, pitch_after_deg = 0.0, roll_after_deg = 0.0, roll_reach_deg = 0.0;
+  Outcome one, two;
+  double net2_err_kg = 0.0, net2_sigma_kg = 0.0;  // second mission's joint estimate
 };
 
 class Harness {
