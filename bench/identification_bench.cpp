@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
   std::vector<double> en, ex, ey;
   int known = 0, cov_n = 0, cov_x = 0, cov_y = 0, y_known = 0;
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;
-  int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0;
+  int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0, twice = 0;
   std::map<std::string, int> identified;
   for (int i = 0; i < truths; ++i) {
     const identification::CaseResult r = h.run(seed + static_cast<std::uint64_t>(i), loop);
@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
       spec += r.one.spec, net_ok += r.one.net_ok, pitch_ok += r.one.pitch_ok, roll_ok += r.one.roll_ok,
           safe += r.one.safe;
       spec2 += r.two.spec, net2 += r.two.net_ok, pitch2 += r.two.pitch_ok, roll2 += r.two.roll_ok,
-          safe2 += r.two.safe && r.one.safe;
+          safe2 += r.twice && r.two.safe && r.one.safe, twice += r.twice;
       if (r.log_rpms.size() >= 3) ++n3, spec3 += r.one.spec, spec23 += r.two.spec;
     }
   }
@@ -141,8 +141,8 @@ int main(int argc, char** argv) {
                 spec, looped, spec3, n3, net_ok, pitch_ok, roll_ok, safe, looped);
   if (loop)
     std::printf("  two moves (second from the joint history calibration): spec %d of %d (>= 3 steady speeds: %d of %d); "
-                "net %d, pitch %d, roll %d; never negative in either %d of %d\n",
-                spec2, looped, spec23, n3, net2, pitch2, roll2, safe2, looped);
+                "net %d, pitch %d, roll %d; never negative in either %d of %d flown twice\n",
+                spec2, looped, spec23, n3, net2, pitch2, roll2, safe2, twice);
   if (timing) {
     std::printf("  analysis + calibration, 3 h at 1 Hz: %.3f s\n", timeAnalysis(h, 3 * 3600.0, 1.0));
     std::printf("  analysis + calibration, 24 h at 10 Hz: %.3f s\n", timeAnalysis(h, 24 * 3600.0, 0.1));

@@ -198,6 +198,35 @@ SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, do
   return out;
 }
 
+Eigen::MatrixXd covarianceAfter(const SteadyHydroCoefficients& c, double W, double rho_ref, const SteadyCalibration& cal,
+                                const std::vector<CalibrationSegment>& planned) {
+  Eigen::MatrixXd info = cal.cov.inverse();
+  Eigen::Matrix<double, 2, kCalibrationCount> A;
+  Eigen::Vector2d b;
+  for (const CalibrationSegment& s : planned) {
+    auto resid = [&](const std::array<double, 5>& v) {
+      Eigen::Matrix<double, 2, kCalibrationCount> Ai;
+      Eigen::Vector2d bi;
+      rowsOf(c, W, rho_ref, s, v, Ai, bi);
+      return Eigen::Vector2d(Ai * cal.p - bi);
+    };
+    Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
+    for (int j = 0; j < 5; ++j) {
+      if (!(s.se[j] > 0.0)) continue;
+      std::array<double, 5> hi = s.v, lo = s.v;
+      hi[j] += s.se[j];
+      lo[j] -= s.se[j];
+      const Eigen::Vector2d d = 0.5 * (resid(hi) - resid(lo));
+      C += d * d.transpose();
+    }
+    C(0, 0) += 1e-6;
+    C(1, 1) += 1e-6;
+    rowsOf(c, W, rho_ref, s, s.v, A, b);
+    info += A.transpose() * C.inverse() * A;
+  }
+  return info.inverse();
+}
+
 SteadyHydroCoefficients calibratedCoefficients(const SteadyHydroCoefficients& c, double rho_ref,
                                                const Eigen::VectorXd& p) {
   SteadyHydroCoefficients k = c;

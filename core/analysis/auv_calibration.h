@@ -70,6 +70,12 @@ double pitchMomentUw(const SteadyHydroCoefficients& c, double rho, double munk_f
 SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double weight_n, double rho_ref,
                                   const std::vector<CalibrationSegment>& segments, const CalibrationPriors& priors);
 
+// The posterior covariance after adding planned steady segments (a short
+// calibration manoeuvre) to the log: posterior information plus the planned
+// segments' Fisher information of the same model at the calibrated values.
+Eigen::MatrixXd covarianceAfter(const SteadyHydroCoefficients& c, double weight_n, double rho_ref,
+                                const SteadyCalibration& cal, const std::vector<CalibrationSegment>& planned);
+
 // Steady hydrodynamic loads with the calibrated groups (for prediction).
 SteadyHydroCoefficients calibratedCoefficients(const SteadyHydroCoefficients& c, double rho_ref,
                                                const Eigen::VectorXd& p);

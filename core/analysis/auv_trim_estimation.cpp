@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "analysis/level_flight.h"
 #include "common/units.h"
 
 namespace auv::analysis {
@@ -232,6 +233,54 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
   }
 }
 
+// Three 5-min legs at 130/160/190 rpm at one depth, flown as the calibrated
+// model predicts, with the measurement noise of this log's segments scaled
+// to 5 min: the sigmas after adding them to this log.
+std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoefficients& nominal, const Model& m,
+                                                        const SteadyCalibration& cal, const std::vector<Meas>& meas,
+                                                        std::span<const SteadySegmentMeans> segments,
+                                                        const std::vector<std::size_t>& seg_index,
+                                                        const AuvTrimEstimate& est) {
+  if (!est.calibrated || meas.empty()) return std::nullopt;
+  // Speed per rpm and noise per segment from this log.
+  double su = 0.0, sn = 0.0, dur = 0.0;
+  std::array<double, 5> se{};
+  for (std::size_t j = 0; j < meas.size(); ++j) {
+    const SteadySegmentMeans& g = segments[seg_index[j]];
+    if (g.prop_rpm.valid() && g.prop_rpm.mean > 1.0) su += g.speed_mps.mean, sn += g.prop_rpm.mean;
+    dur += g.end_s - g.start_s;
+    for (int k = 0; k < 5; ++k) se[static_cast<std::size_t>(k)] += meas[j].se[static_cast<std::size_t>(k)];
+  }
+  if (!(sn > 0.0)) return std::nullopt;
+  const double per_rpm = su / sn, mean_dur = dur / static_cast<double>(meas.size());
+  for (double& x : se) x *= std::sqrt(mean_dur / 300.0) / static_cast<double>(meas.size());
+  AuvTrimEstimate::Manoeuvre man;
+  std::vector<CalibrationSegment> planned;
+  for (double rpm : {130.0, 160.0, 190.0}) {
+    LevelFlightInput in;
+    in.weight_n = m.W;
+    in.buoyancy_n = m.W + cal.p(kNet);
+    in.x_g_m = cal.p(kXg);
+    in.bg_m = cal.p(kBg);
+    in.speed_mps = per_rpm * rpm;
+    in.density_kgm3 = m.rho;
+    const LevelFlight f = solveLevelFlight(*est.calibrated, in);
+    if (!f.ok) continue;
+    CalibrationSegment c;
+    c.v = {in.speed_mps, f.pitch_rad, 0.0, f.elevator_deg + est.elevator_bias_deg, 0.0};
+    c.se = se;
+    c.density_kgm3 = m.rho;
+    planned.push_back(c);
+    man.legs.push_back("5 min level at " + fmt("%.0f", rpm) + " rpm (about " + fmt("%.1f", in.speed_mps) +
+                       " m/s) at the operating depth");
+  }
+  if (planned.empty()) return std::nullopt;
+  const Eigen::MatrixXd cov = covarianceAfter(nominal, m.W, m.rho, cal, planned);
+  man.net_sigma_kg = std::sqrt(cov(kNet, kNet)) / units::g0;
+  man.x_sigma_m = std::sqrt(cov(kXg, kXg));
+  return man;
+}
+
 }  // namespace
 
 AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, const SteadyHydroCoefficients* coeffs,
@@ -394,6 +443,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     out.segment_net_buoyancy_kg[seg_index[j]] = b(0) / A(0, 0) / units::g0;
     out.segment_x_m[seg_index[j]] = b(1) / A(1, 1);
   }
+  out.manoeuvre = planManoeuvre(*coeffs, m, cal, meas, segments, seg_index, out);
   if (!m.c.note.empty()) out.notes.push_back(m.c.note);
   std::string ident, prior;
   for (const auto& q : cal.parameters) (q.identified ? ident : prior) += (q.identified ? ident : prior).empty() ? q.id : ", " + q.id;

@@ -92,6 +92,14 @@ struct AuvTrimEstimate {
   std::vector<CalibrationParameter> calibration;
   std::optional<SteadyHydroCoefficients> calibrated;
   double net_x_correlation = 0.0;
+  // A short addition to the next mission that would identify the rest
+  // (issue 11 item 5), with the sigmas predicted after it from the Fisher
+  // information of the same model.
+  struct Manoeuvre {
+    std::vector<std::string> legs;
+    double net_sigma_kg = 0.0, x_sigma_m = 0.0;
+  };
+  std::optional<Manoeuvre> manoeuvre;
   std::vector<std::string> notes, warnings;
 };
 

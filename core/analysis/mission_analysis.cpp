@@ -441,6 +441,10 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     d["segments_used"] = e.segments_used;
     d["chi2_per_dof"] = e.chi2_per_dof;
     if (e.buoyancy_identified) d["net_cg_x_correlation"] = e.net_x_correlation;
+    if (e.manoeuvre)
+      d["calibration_manoeuvre"] = {{"legs", e.manoeuvre->legs},
+                                    {"expected_sigma", {{"net_buoyancy_kg", e.manoeuvre->net_sigma_kg},
+                                                        {"cg_x_mm", units::mToMm(e.manoeuvre->x_sigma_m)}}}};
     if (e.calibrated) {
       // The calibrated steady coefficients (Munk moment inside M_w), for
       // forward prediction by the planner.

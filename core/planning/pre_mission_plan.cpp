@@ -325,6 +325,20 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     if (r.net_after_kg < out.margin_kg - 1e-6) out.safe = false;
   }
   predictFlightPitch(v, in.estimate, out.vehicle, sol, out);
+  // Too wide for the band: the margin alone takes half of it, or the
+  // answer ends outside it. Then ask for the manoeuvre.
+  if (in.estimate.calibration_manoeuvre && in.policy != PlanPolicy::Classic &&
+      (!out.buoyancy_in_band || 2.0 * out.margin_kg > spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg)) {
+    out.calibration_manoeuvre = in.estimate.calibration_manoeuvre;
+    const nlohmann::json& m = *out.calibration_manoeuvre;
+    char buf[240];
+    std::snprintf(buf, sizeof buf,
+                  "the net-buoyancy sigma (%.2f kg) is too wide for the %.1f kg band: add the calibration manoeuvre to "
+                  "the next mission (%zu short legs at different speeds); it would bring the sigma to about %.2f kg",
+                  out.net_sigma_kg, spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg, m["legs"].size(),
+                  m["expected_sigma"]["net_buoyancy_kg"].get<double>());
+    out.notes.emplace_back(buf);
+  }
   explainPlan(v, pr, out);
   if (in.estimate.cg_y_basis == "cruise" && in.estimate.cg_y_m) {
     char buf[200];

@@ -79,6 +79,8 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
     const nlohmann::json& d = report["details"]["auv_estimate"];
     if (d.is_object() && d.contains("calibrated_hydrodynamics") && d["calibrated_hydrodynamics"].is_object())
       e.calibrated_hydrodynamics = d["calibrated_hydrodynamics"];
+    if (d.is_object() && d.contains("calibration_manoeuvre") && d["calibration_manoeuvre"].is_object())
+      e.calibration_manoeuvre = d["calibration_manoeuvre"];
   }
   return e;
 }

@@ -34,6 +34,8 @@ struct TrimEstimate {
   // "hydrodynamics" section: details.auv_estimate.calibrated_hydrodynamics),
   // for the flight-pitch prediction; unset = the profile's.
   std::optional<nlohmann::json> calibrated_hydrodynamics;
+  // The analysis's proposed calibration manoeuvre {legs, expected_sigma}.
+  std::optional<nlohmann::json> calibration_manoeuvre;
 };
 
 // Reads the analysis report JSON (issue #3 contract: net_buoyancy_kg,

@@ -5,6 +5,8 @@
 // the integrator calls.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+
 #include <cmath>
 #include <random>
 
@@ -115,6 +117,69 @@ TEST(TruthDraw, IsDeterministicAndInsideTheIssuesRanges) {
     EXPECT_LE(a.net_buoyancy_kg, 8.0);
   }
   EXPECT_NE(sim::drawTruth(1).describe(), sim::drawTruth(2).describe());
+}
+
+}  // namespace
+}  // namespace auv
+
+namespace auv {
+namespace {
+
+// The manoeuvre's predicted sigma (item 5) is the posterior of the same
+// model: calibrating the log plus the planned segments, measured exactly as
+// predicted, gives the covariance covarianceAfter() promised.
+TEST(CalibrationManoeuvre, PredictedCovarianceIsTheCalibrationWithThePlannedLegs) {
+  const nlohmann::json nominal = JsonReader::parseFile(std::string(AUV_RESOURCE_DIR) + "/sim/hugin1000_hydrodynamics.json");
+  VehicleProfile p = loadVehicleProfile(std::string(AUV_RESOURCE_DIR) + "/vehicles/hugin1000.json");
+  for (const char* k : {"hydrodynamics", "actuators"}) p.sections[k] = nominal[k];
+  std::string why;
+  const auto c = analysis::steadyHydroFromProfile(p, why);
+  ASSERT_TRUE(c);
+  const double W = 1500.0 * units::g0, rho = 1025.0;
+  // Two legs at one speed and depth: weakly identified.
+  auto seg = [](double u, double th, double e) {
+    analysis::CalibrationSegment s;
+    s.v = {u, th, 0.0, e, 0.0};
+    s.se = {0.002, 2e-4, 2e-4, 0.02, 0.001};
+    return s;
+  };
+  const std::vector<analysis::CalibrationSegment> log = {seg(2.0, -0.010, 2.0), seg(2.0, -0.011, 2.1)};
+  const analysis::CalibrationPriors pri;
+  const analysis::SteadyCalibration cal = analysis::calibrateSteady(*c, W, rho, log, pri);
+  ASSERT_TRUE(cal.ok);
+  // Planned legs at the values the calibrated model predicts for them: the
+  // residuals there are zero, so adding them moves only the covariance.
+  const analysis::SteadyHydroCoefficients k = analysis::calibratedCoefficients(*c, rho, cal.p);
+  std::vector<analysis::CalibrationSegment> planned;
+  for (double u : {1.5, 2.5}) {
+    // Solve heave and pitch for (theta, e) at the calibrated state by Newton on the same balance.
+    double th = 0.0, e = 0.0;
+    for (int it = 0; it < 50; ++it) {
+      auto r = [&](double t, double el) {
+        const analysis::HydroLoads h = analysis::steadyHydroLoads(k, {u, t, 0.0, el - cal.elevator_offset_deg, 0.0, rho});
+        return Eigen::Vector2d(cal.p(analysis::kNet) * std::cos(t) - h.Z(),
+                               W * (cal.p(analysis::kBg) * std::sin(t) + cal.p(analysis::kXg) * std::cos(t)) - h.M());
+      };
+      const Eigen::Vector2d f = r(th, e);
+      Eigen::Matrix2d J;
+      J.col(0) = (r(th + 1e-7, e) - f) / 1e-7;
+      J.col(1) = (r(th, e + 1e-7) - f) / 1e-7;
+      const Eigen::Vector2d d = J.inverse() * (-f);
+      th += d(0), e += d(1);
+    }
+    planned.push_back(seg(u, th, e));
+  }
+  const Eigen::MatrixXd predicted = analysis::covarianceAfter(*c, W, rho, cal, planned);
+  std::vector<analysis::CalibrationSegment> all = log;
+  all.insert(all.end(), planned.begin(), planned.end());
+  const analysis::SteadyCalibration after = analysis::calibrateSteady(*c, W, rho, all, pri);
+  ASSERT_TRUE(after.ok);
+  const double s_pred = std::sqrt(predicted(analysis::kNet, analysis::kNet));
+  const double s_after = std::sqrt(after.cov(analysis::kNet, analysis::kNet));
+  EXPECT_LT(s_pred, 0.7 * std::sqrt(cal.cov(analysis::kNet, analysis::kNet)));  // the legs help
+  EXPECT_NEAR(s_pred, s_after, 0.05 * s_after);
+  EXPECT_NEAR(std::sqrt(predicted(analysis::kXg, analysis::kXg)), std::sqrt(after.cov(analysis::kXg, analysis::kXg)),
+              0.05 * std::sqrt(after.cov(analysis::kXg, analysis::kXg)));
 }
 
 }  // namespace

@@ -197,6 +197,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   const auto [plan2, after2] = planFrom(analysis::toJson(rep2), after);
   const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2);
   judge(f3, analyse(f3, profile_, after2), r.two);
+  r.twice = true;
   r.net2_err_kg = rep2.net_buoyancy_kg.value - (rep2.density_kgm3.mean * profile_.hull.volumeAt(rep2.temperature_degC.mean, rep2.pressure_dbar.mean) - f2.mass_kg);
   r.net2_sigma_kg = rep2.net_buoyancy_kg.sigma;
   return r;

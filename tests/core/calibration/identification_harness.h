@@ -33,7 +33,7 @@ struct CaseResult {
     bool spec = false, net_ok = false, pitch_ok = false, roll_ok = false, safe = false;
     double net_op_kg = 0.0, min_net_kg = 0.0, pitch_deg = 0.0, roll_deg = 0.0, roll_reach_deg = 0.0;
   };
-  bool looped = false;
+  bool looped = false, twice = false;  // twice: the second mission's joint estimate existed
   double plan_band_lo_kg = 0.0, plan_band_hi_kg = 0.0, plan_net_kg = 0.0;
   Outcome one, two;
   double net2_err_kg = 0.0, net2_sigma_kg = 0.0;  // second mission's joint estimate
