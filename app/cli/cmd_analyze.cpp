@@ -106,8 +106,8 @@ Command addAnalyzeCommand(CLI::App& app) {
                   "CG below CB from an inclining/roll test, mm: turns the static roll into a CG y offset");
   o->target.add(cmd);
   cmd->add_option("--coefficient-sigma", o->coefficient_sigma,
-                  "AUVs: 1-sigma relative uncertainty of the profile's hydrodynamic derivatives (default 0.10; "
-                  "0.02 once calibrated, e.g. by tow tank or model check); it dominates the net-buoyancy sigma");
+                  "AUVs: prior 1-sigma of each group of the profile's hydrodynamic derivatives in the calibration "
+                  "(default 0.30 with the Munk structure unknown; 0.02 once known, e.g. from a tow tank)");
   cmd->add_flag("--no-classic", o->no_classic, "Skip the thesis's App. D checks (reported under details.classic)");
   cmd->add_option("--json", o->json, "Write the JSON report here ('-' = stdout instead of text)");
   return {cmd, [o]() { return runAnalyze(*o); }};

@@ -112,6 +112,12 @@ nlohmann::json toJson(const AnalysisReport& r) {
   j["not_identifiable"] = ni;
   j["warnings"] = r.warnings;
   j["notes"] = r.notes;
+  nlohmann::json cal = nlohmann::json::array();
+  for (const CalibrationParameter& q : r.calibration)
+    cal.push_back({{"id", q.id}, {"value", num(q.value)}, {"unit", q.unit}, {"sigma", num(q.sigma)},
+                   {"profile_value", num(q.profile_value)}, {"prior_sigma", num(q.prior_sigma)},
+                   {"identified", q.identified}});
+  j["calibration"] = cal;
   j["details"] = r.details;
   return j;
 }

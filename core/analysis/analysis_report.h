@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/auv_trim_estimation.h"
+#include "analysis/calibration_parameter.h"
 #include "analysis/segments.h"
 #include "analysis/statistics.h"
 
@@ -76,6 +78,13 @@ struct AnalysisReport {
   // Water at operating depth (in situ).
   MeanEstimate temperature_degC, salinity_psu, density_kgm3, pressure_dbar, depth_m;
   std::string salinity_source, density_source;
+
+  // Vehicle constants the analysis calibrated with the ballast state (JSON
+  // `calibration`), empty when there was nothing to calibrate.
+  std::vector<CalibrationParameter> calibration;
+  // AUVs: the steady segments the estimate used, with their absolute
+  // buoyancy, so a later mission can calibrate from this one (typed, not JSON).
+  std::vector<SteadySegmentMeans> steady_segments;
 
   std::vector<SegmentReport> segments;  // phases, then operating windows, in time order
   std::vector<std::string> warnings;

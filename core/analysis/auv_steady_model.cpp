@@ -23,6 +23,13 @@ std::optional<SteadyHydroCoefficients> steadyHydroFromProfile(const VehicleProfi
   c.Mww_kg = h.number("Mww_kg", 0.0);
   c.Xudot_kg = h.number("Xudot_kg", 0.0);
   c.Zwdot_kg = h.number("Zwdot_kg", 0.0);
+  if (h.has("munk_moment")) {
+    const std::string munk = h.text("munk_moment");
+    if (munk != "added" && munk != "inside_Mw")
+      h.fail("munk_moment", "unknown structure '" + munk + "'", "use \"added\" or \"inside_Mw\"");
+    c.munk_factor = munk == "inside_Mw" ? 0.0 : 1.0;
+    c.munk_stated = true;
+  }
 
   // Plane derivatives: in "hydrodynamics" or in "actuators.stern_planes".
   auto readPlanes = [&c](const JsonReader& planes) {
@@ -64,7 +71,7 @@ HydroLoads steadyHydroLoads(const SteadyHydroCoefficients& c, const SteadyFlight
   HydroLoads h;
   h.Z_lift = (kZw * au + c.Zww_kg_per_m * std::abs(w)) * w;
   h.M_lift = (kMw * u + c.Mww_kg * std::abs(w)) * w;
-  h.M_munk = (c.Xudot_kg - c.Zwdot_kg) * u * w;
+  h.M_munk = c.munk_factor * (c.Xudot_kg - c.Zwdot_kg) * u * w;
   if (c.has_planes) {
     h.Z_planes = c.Z_e_per_deg * au * u * f.elevator_deg;
     h.M_planes = c.M_e_per_deg * au * u * f.elevator_deg;

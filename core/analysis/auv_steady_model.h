@@ -25,6 +25,11 @@ struct SteadyHydroCoefficients {
   double Zw_prime = 0.0, Mw_prime = 0.0;
   double Zww_kg_per_m = 0.0, Mww_kg = 0.0;
   double Xudot_kg = 0.0, Zwdot_kg = 0.0;
+  // Munk moment (X_udot - Z_wdot) u w: 1 on top of M_w (the simulator's
+  // default Fossen form), 0 inside the tabulated M_w ("munk_moment":
+  // "inside_Mw"). munk_stated: the profile said which.
+  double munk_factor = 1.0;
+  bool munk_stated = false;
   bool has_planes = false;
   double Z_e_per_deg = 0.0;  // N per (m/s)^2 per degree, interchange sign
   double M_e_per_deg = 0.0;  // N m per (m/s)^2 per degree, interchange sign

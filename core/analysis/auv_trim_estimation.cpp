@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "analysis/level_flight.h"
 #include "common/units.h"
 
 namespace auv::analysis {
@@ -66,73 +67,22 @@ struct Model {
   }
 };
 
-struct Solution {
-  bool ok = false;
-  Eigen::VectorXd p;
-  Eigen::MatrixXd cov;  // random part
-  double chi2_dof = 0.0;
-};
-
-// Generalised least squares with a 2x2 measurement covariance per segment,
-// linearised at `p0`.
-Solution solveGls(const Model& m, const std::vector<Meas>& meas, const Eigen::VectorXd& p0) {
-  const int k = m.k();
-  const auto n = static_cast<Eigen::Index>(meas.size());
-  Eigen::MatrixXd At(2 * n, k);
-  Eigen::VectorXd bt(2 * n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Meas& s = meas[static_cast<std::size_t>(i)];
-    Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
-    for (int j = 0; j < 5; ++j) {
-      if (!(s.se[j] > 0.0)) continue;
-      std::array<double, 5> hi = s.v, lo = s.v;
-      hi[j] += s.se[j];
-      lo[j] -= s.se[j];
-      const Eigen::Vector2d d = 0.5 * (m.residual(hi, p0) - m.residual(lo, p0));
-      C += d * d.transpose();
-    }
-    // Floor: 1 mN and 1 mN m, so a noise-free segment does not get infinite weight.
-    C(0, 0) += 1e-6;
-    C(1, 1) += 1e-6;
-    const Eigen::Matrix2d Linv = Eigen::Matrix2d(C.llt().matrixL()).inverse();
-    Eigen::MatrixXd A;
-    Eigen::Vector2d b;
-    m.rows(s.v, A, b);
-    At.middleRows(2 * i, 2) = Linv * A;
-    bt.segment(2 * i, 2) = Linv * b;
-  }
-  Solution sol;
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(At, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const auto& sv = svd.singularValues();
-  if (sv.size() < k || !(sv(k - 1) > 1e-9 * sv(0))) return sol;
-  sol.ok = true;
-  sol.p = svd.solve(bt);
-  const Eigen::MatrixXd Vs = svd.matrixV() * sv.cwiseInverse().asDiagonal();
-  sol.cov = Vs * Vs.transpose();
-  const double chi2 = (At * sol.p - bt).squaredNorm();
-  const double dof = static_cast<double>(2 * n - k);
-  if (dof > 0) {
-    sol.chi2_dof = chi2 / dof;
-    sol.cov *= std::max(1.0, sol.chi2_dof);
-  }
-  return sol;
-}
-
-// Solution of the same system with the right-hand side of perturbed
-// coefficients, unweighted by the (unchanged) covariance: the shift is what a
-// systematic coefficient error does to the estimate.
-Eigen::VectorXd shiftFor(const Model& base, const Model& perturbed, const std::vector<Meas>& meas,
-                         const Eigen::VectorXd& p) {
-  const Solution a = solveGls(perturbed, meas, p);
-  const Solution b = solveGls(base, meas, p);
-  if (!a.ok || !b.ok) return Eigen::VectorXd::Zero(p.size());
-  return a.p - b.p;
-}
-
 std::string fmt(const char* f, double v) {
   char buf[96];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
+}
+
+// rpm^2 K_T(J)/K_T0 at the segment's advance ratio (rpm^2 without a law or speed).
+double torqueShape(const SteadySegmentMeans& g, const AuvTrimContext& ctx) {
+  const double rpm = g.prop_rpm.mean;
+  double f = 1.0;
+  if (ctx.propeller && g.speed_mps.valid() && rpm > 1.0) {
+    const auto& p = *ctx.propeller;
+    const double J = g.speed_mps.mean * (1.0 - p.wake_fraction) / (rpm / 60.0 * p.diameter_m);
+    if (J > 0.0) f = 1.0 - std::pow(J / p.c1, p.c2);
+  }
+  return rpm * rpm * f;
 }
 
 void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext& ctx, AuvTrimEstimate& out) {
@@ -168,7 +118,7 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
       const double phi = g->roll_deg.mean * d2r, th = g->pitch_deg.valid() ? g->pitch_deg.mean * d2r : 0.0;
       const double w = 1.0 / (rollSe(g) * d2r / (std::cos(phi) * std::cos(phi)));
       A(i, 0) = w;
-      A(i, 1) = w * g->prop_rpm.mean * g->prop_rpm.mean * 1e-6 / (std::cos(th) * std::cos(phi));
+      A(i, 1) = w * torqueShape(*g, ctx) * 1e-6 / (std::cos(th) * std::cos(phi));
       b(i) = w * std::tan(phi);
     }
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeThinU | Eigen::ComputeThinV);
@@ -179,6 +129,18 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     if (dof > 0) cov *= std::max(1.0, (A * p - b).squaredNorm() / dof);
     out.roll_static_deg = units::radToDeg(std::atan(p(0)));
     out.roll_static_sigma_deg = units::radToDeg(std::sqrt(cov(0, 0)) / (1.0 + p(0) * p(0)));
+    // Propeller torque: tan(roll) = y/BG + Q/(W BG cos(theta) cos(phi)), Q = k rpm^2.
+    const double bg = ctx.bg_measured_m.value_or(ctx.bg_profile_m);
+    CalibrationParameter q;
+    q.id = "propeller_torque";
+    q.unit = ctx.propeller ? "N m at 100 rpm, bollard (J = 0)" : "N m at 100 rpm";
+    q.value = p(1) * 1e-2 * ctx.weight_n * bg;
+    q.sigma = std::sqrt(cov(1, 1)) * 1e-2 * ctx.weight_n * bg;
+    q.prior_value = 0.0;
+    q.prior_sigma = ctx.profile_torque_nm_per_100rpm2;
+    q.profile_value = ctx.profile_torque_nm_per_100rpm2;
+    q.identified = q.sigma < 0.5 * std::max(q.prior_sigma, std::abs(q.value));
+    out.calibration.push_back(q);
     // Roll at cruise measured directly on the segments at the highest rpm
     // (thesis §5.3.3 reads roll where the propeller turns at 160 rpm): no
     // torque law between, so its error does not reach the plan.
@@ -233,6 +195,16 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     } else if (all_stopped) {
       out.y_basis = "static";
     } else {
+      // The static CG y assumes no torque; the torque prior (0 +- the
+      // profile's) is its uncertainty, so the sigma stays honest.
+      if (ctx.profile_torque_nm_per_100rpm2 > 0.0 && ctx.weight_n > 0.0) {
+        const double q = ctx.profile_torque_nm_per_100rpm2 * std::pow(rpm_max / 100.0, 2);
+        const double bg = ctx.bg_measured_m.value_or(ctx.bg_profile_m);
+        if (bg > 0.0) {
+          const double extra_deg = units::radToDeg(q / (ctx.weight_n * bg));
+          out.roll_static_sigma_deg = std::hypot(out.roll_static_sigma_deg, extra_deg);
+        }
+      }
       out.y_basis = "cruise_equivalent";
       out.warnings.push_back(
           "all steady segments run the propeller at about the same speed, so its reaction torque cannot be separated "
@@ -259,6 +231,54 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     yOf(out.cruise_roll_deg, out.cruise_roll_sigma_deg, out.y_cruise_m, out.y_cruise_sigma_m);
     out.y_cruise_identified = true;
   }
+}
+
+// Three 5-min legs at 130/160/190 rpm at one depth, flown as the calibrated
+// model predicts, with the measurement noise of this log's segments scaled
+// to 5 min: the sigmas after adding them to this log.
+std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoefficients& nominal, const Model& m,
+                                                        const SteadyCalibration& cal, const std::vector<Meas>& meas,
+                                                        std::span<const SteadySegmentMeans> segments,
+                                                        const std::vector<std::size_t>& seg_index,
+                                                        const AuvTrimEstimate& est) {
+  if (!est.calibrated || meas.empty()) return std::nullopt;
+  // Speed per rpm and noise per segment from this log.
+  double su = 0.0, sn = 0.0, dur = 0.0;
+  std::array<double, 5> se{};
+  for (std::size_t j = 0; j < meas.size(); ++j) {
+    const SteadySegmentMeans& g = segments[seg_index[j]];
+    if (g.prop_rpm.valid() && g.prop_rpm.mean > 1.0) su += g.speed_mps.mean, sn += g.prop_rpm.mean;
+    dur += g.end_s - g.start_s;
+    for (int k = 0; k < 5; ++k) se[static_cast<std::size_t>(k)] += meas[j].se[static_cast<std::size_t>(k)];
+  }
+  if (!(sn > 0.0)) return std::nullopt;
+  const double per_rpm = su / sn, mean_dur = dur / static_cast<double>(meas.size());
+  for (double& x : se) x *= std::sqrt(mean_dur / 300.0) / static_cast<double>(meas.size());
+  AuvTrimEstimate::Manoeuvre man;
+  std::vector<CalibrationSegment> planned;
+  for (double rpm : {130.0, 160.0, 190.0}) {
+    LevelFlightInput in;
+    in.weight_n = m.W;
+    in.buoyancy_n = m.W + cal.p(kNet);
+    in.x_g_m = cal.p(kXg);
+    in.bg_m = cal.p(kBg);
+    in.speed_mps = per_rpm * rpm;
+    in.density_kgm3 = m.rho;
+    const LevelFlight f = solveLevelFlight(*est.calibrated, in);
+    if (!f.ok) continue;
+    CalibrationSegment c;
+    c.v = {in.speed_mps, f.pitch_rad, 0.0, f.elevator_deg + est.elevator_bias_deg, 0.0};
+    c.se = se;
+    c.density_kgm3 = m.rho;
+    planned.push_back(c);
+    man.legs.push_back("5 min level at " + fmt("%.0f", rpm) + " rpm (about " + fmt("%.1f", in.speed_mps) +
+                       " m/s) at the operating depth");
+  }
+  if (planned.empty()) return std::nullopt;
+  const Eigen::MatrixXd cov = covarianceAfter(nominal, m.W, m.rho, cal, planned);
+  man.net_sigma_kg = std::sqrt(cov(kNet, kNet)) / units::g0;
+  man.x_sigma_m = std::sqrt(cov(kXg, kXg));
+  return man;
 }
 
 }  // namespace
@@ -342,106 +362,100 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     return out;
   }
 
-  // Elevator zero offset: separable from B - W only through the u^2 scaling.
-  if (use_elevator && meas.size() >= 2) {
-    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-    for (const Meas& s : meas) {
-      lo = std::min(lo, s.v[kSpeed] * s.v[kSpeed]);
-      hi = std::max(hi, s.v[kSpeed] * s.v[kSpeed]);
-    }
-    m.fit_bias = hi > ctx.min_speed2_spread * lo;
+  // Joint calibration of the hydrodynamic groups with the ballast state
+  // (auv_calibration.h): every group has a prior from the profile, the log
+  // narrows what it can, and the sigmas are the posterior's.
+  CalibrationPriors pri;
+  if (ctx.coefficient_rel_sigma) {
+    pri.group_rel_sigma = *ctx.coefficient_rel_sigma;
+    pri.munk_factor = coeffs->munk_factor;
+    pri.munk_sigma = *ctx.coefficient_rel_sigma;
+  } else if (coeffs->munk_stated) {
+    pri.munk_factor = coeffs->munk_factor;
+    pri.munk_sigma = pri.group_rel_sigma;
   }
-  if (use_elevator && !m.fit_bias)
-    out.notes.push_back(std::string("elevator zero offset assumed 0: ") + kNotId +
-                        "the steady segments do not span enough speeds (max/min speed^2 below " +
-                        fmt("%.2f", ctx.min_speed2_spread) + ")");
-
-  Eigen::VectorXd p = Eigen::VectorXd::Zero(m.k());
-  Solution sol;
-  for (int pass = 0; pass < 3; ++pass) {
-    sol = solveGls(m, meas, p);
-    if (!sol.ok) break;
-    p = sol.p;
+  pri.bg_m = m.BG;
+  pri.bg_sigma_m = ctx.bg_measured_m ? ctx.bg_measured_sigma_m : ctx.bg_profile_rel_sigma * m.BG;
+  std::vector<CalibrationSegment> cs;
+  for (std::size_t j = 0; j < meas.size(); ++j) {
+    const SteadySegmentMeans& g = segments[seg_index[j]];
+    CalibrationSegment c;
+    c.v = meas[j].v;
+    c.se = meas[j].se;
+    c.density_kgm3 = std::isfinite(g.density_kgm3) ? g.density_kgm3 : ctx.density_kgm3;
+    c.buoyancy_change_n = std::isfinite(g.buoyancy_change_n) ? g.buoyancy_change_n : 0.0;
+    c.weight_n = g.weight_n;
+    c.moment_offset_nm = g.moment_offset_nm;
+    cs.push_back(c);
   }
-  if (!sol.ok && m.fit_bias) {
-    m.fit_bias = false;
-    out.notes.push_back(std::string("elevator zero offset assumed 0: ") + kNotId + "it is not separable from the net buoyancy here");
-    p = Eigen::VectorXd::Zero(2);
-    for (int pass = 0; pass < 3; ++pass) {
-      sol = solveGls(m, meas, p);
-      if (!sol.ok) break;
-      p = sol.p;
-    }
+  std::size_t history_used = 0;
+  for (const SteadySegmentMeans& g : ctx.history) {
+    if (!g.speed_mps.valid() || !g.pitch_deg.valid() || (use_elevator && !g.elevator_deg.valid())) continue;
+    const Meas hm = measOf(g, use_elevator);
+    CalibrationSegment c;
+    c.v = hm.v;
+    c.se = hm.se;
+    c.density_kgm3 = std::isfinite(g.density_kgm3) ? g.density_kgm3 : ctx.density_kgm3;
+    c.buoyancy_change_n = g.buoyancy_change_n;
+    c.weight_n = g.weight_n;
+    c.moment_offset_nm = g.moment_offset_nm;
+    cs.push_back(c);
+    ++history_used;
   }
-  if (!sol.ok) {
+  const SteadyCalibration cal = calibrateSteady(*coeffs, m.W, m.rho, cs, pri);
+  if (history_used > 0)
+    out.notes.push_back("calibrated with " + std::to_string(history_used) +
+                        " steady segments of earlier missions of this configuration and the known weight changes since");
+  if (!cal.ok) {
     notIdentifiable("the steady segments do not determine the heave and pitch balance (degenerate geometry)");
     return out;
   }
-  out.chi2_per_dof = sol.chi2_dof;
-
-  // Systematic part: every derivative group off by its relative sigma, BG
-  // off by its sigma when it comes from the profile.
-  Eigen::MatrixXd cov = sol.cov;
-  auto addShift = [&](const Model& perturbed) {
-    const Eigen::VectorXd d = shiftFor(m, perturbed, meas, p);
-    cov += d * d.transpose();
-  };
-  const double r = ctx.coefficient_rel_sigma;
-  if (r > 0) {
-    Model a = m;
-    a.c.Zw_prime *= 1 + r;
-    a.c.Zww_kg_per_m *= 1 + r;
-    addShift(a);
-    Model b = m;
-    b.c.Mw_prime *= 1 + r;
-    b.c.Mww_kg *= 1 + r;
-    addShift(b);
-    Model c = m;
-    c.c.Xudot_kg *= 1 + r;
-    c.c.Zwdot_kg *= 1 + r;
-    addShift(c);
-    if (m.c.has_planes) {
-      Model d = m;
-      d.c.Z_e_per_deg *= 1 + r;
-      d.c.M_e_per_deg *= 1 + r;
-      addShift(d);
-    }
-  }
-  if (!ctx.bg_measured_m && ctx.bg_profile_rel_sigma > 0) {
-    Model e = m;
-    e.BG *= 1 + ctx.bg_profile_rel_sigma;
-    addShift(e);
-  }
-
+  out.chi2_per_dof = cal.chi2_per_dof;
   out.buoyancy_identified = out.x_identified = true;
-  out.net_buoyancy_kg = p(0) / units::g0;
-  out.net_buoyancy_sigma_kg = std::sqrt(cov(0, 0)) / units::g0;
-  out.x_m = p(1);
-  out.x_sigma_m = std::sqrt(cov(1, 1));
-  if (m.fit_bias) {
-    out.elevator_bias_fitted = true;
-    out.elevator_bias_deg = p(2);
-    out.elevator_bias_sigma_deg = std::sqrt(cov(2, 2));
+  out.net_buoyancy_kg = cal.p(kNet) / units::g0;
+  out.net_buoyancy_sigma_kg = std::sqrt(cal.cov(kNet, kNet)) / units::g0;
+  out.x_m = cal.p(kXg);
+  out.x_sigma_m = std::sqrt(cal.cov(kXg, kXg));
+  out.net_x_correlation = cal.cov(kNet, kXg) / std::sqrt(cal.cov(kNet, kNet) * cal.cov(kXg, kXg));
+  if (coeffs->has_planes) {
+    // Reported as fitted only where the log narrowed it; otherwise it stays
+    // at its prior (0 +- elevator_offset_sigma_deg, in the sigmas).
+    out.elevator_bias_deg = cal.elevator_offset_deg;
+    out.elevator_bias_sigma_deg = cal.elevator_offset_sigma_deg;
+    out.elevator_bias_fitted = out.elevator_bias_sigma_deg < 0.5 * pri.elevator_offset_sigma_deg;
+    if (!out.elevator_bias_fitted)
+      out.notes.push_back(std::string("elevator zero offset assumed 0 +- ") + fmt("%.0f", pri.elevator_offset_sigma_deg) +
+                          " deg (its prior, in the sigmas): " + kNotId +
+                          "the steady segments do not span enough speeds to separate it from the net buoyancy");
   }
-  // Per-segment values with the common elevator offset applied.
+  for (const auto& q : cal.parameters) out.calibration.push_back(q);
+  out.calibrated = calibratedCoefficients(*coeffs, m.rho, cal.p);
+  // Per-segment values at each segment's own water, calibrated model.
+  Model one = m;
+  one.c = *out.calibrated;
+  one.BG = cal.p(kBg);
   for (std::size_t j = 0; j < meas.size(); ++j) {
     std::array<double, 5> v = meas[j].v;
-    if (m.fit_bias) v[kElev] -= p(2);
-    Model one = m;
-    one.fit_bias = false;
+    v[kElev] -= out.elevator_bias_deg;
     Eigen::MatrixXd A;
     Eigen::Vector2d b;
     one.rows(v, A, b);
     out.segment_net_buoyancy_kg[seg_index[j]] = b(0) / A(0, 0) / units::g0;
     out.segment_x_m[seg_index[j]] = b(1) / A(1, 1);
   }
+  out.manoeuvre = planManoeuvre(*coeffs, m, cal, meas, segments, seg_index, out);
   if (!m.c.note.empty()) out.notes.push_back(m.c.note);
+  std::string ident, prior;
+  for (const auto& q : cal.parameters) (q.identified ? ident : prior) += (q.identified ? ident : prior).empty() ? q.id : ", " + q.id;
+  out.notes.push_back("hydrodynamics calibrated jointly with the ballast state (" + fmt("%.1f", cal.data_parameters) +
+                      " parameters determined by the log); identified: " + (ident.empty() ? "none" : ident) +
+                      "; at their prior: " + (prior.empty() ? "none" : prior));
+  out.notes.push_back("sigmas are the calibration's posterior (prior " +
+                      fmt("%.0f", 100 * pri.group_rel_sigma) + " % per group of hydrodynamic derivatives" +
+                      (pri.munk_sigma >= 0.5 ? std::string(", Munk moment inside M_w or on top unknown") : std::string()) + ")");
   if (!ctx.bg_measured_m)
-    out.notes.push_back("x uses the profile's BG = " + fmt("%.1f", units::mToMm(m.BG)) +
-                        " mm for the BG sin(pitch) term (+-" + fmt("%.0f", 100 * ctx.bg_profile_rel_sigma) +
-                        " % in the sigma); --bg-mm overrides it");
-  out.notes.push_back("sigmas include a " + fmt("%.0f", 100 * r) +
-                      " % systematic uncertainty of each group of hydrodynamic derivatives");
+    out.notes.push_back("BG from the profile (" + fmt("%.1f", units::mToMm(m.BG)) + " mm +- " +
+                        fmt("%.0f", 100 * ctx.bg_profile_rel_sigma) + " %) sets the scale of the pitch moments; --bg-mm from a roll test sharpens CG x");
   return out;
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/auv_calibration.h"
 #include "analysis/auv_steady_model.h"
 #include "analysis/statistics.h"
 
@@ -22,6 +23,15 @@ namespace auv::analysis {
 struct SteadySegmentMeans {
   double start_s = 0.0, end_s = 0.0;
   MeanEstimate speed_mps, pitch_deg, roll_deg, elevator_deg, depth_rate_mps, prop_rpm;
+  // In-situ density over the segment and the buoyancy change relative to the
+  // reference water (density and hull law), known from the CTD: a segment at
+  // another depth is a known change of the net buoyancy.
+  double density_kgm3 = std::numeric_limits<double>::quiet_NaN();
+  double buoyancy_change_n = 0.0;
+  double buoyancy_n = std::numeric_limits<double>::quiet_NaN();  // rho_i V_i g, absolute
+  // History segments only (see CalibrationSegment): set by the caller.
+  double weight_n = 0.0, moment_offset_nm = 0.0;
+  bool from_history = false;
 };
 
 struct AuvTrimContext {
@@ -30,7 +40,24 @@ struct AuvTrimContext {
   std::optional<double> bg_measured_m;  // --bg-mm: needed for CG y
   double bg_profile_m = 0.0;            // used for the small BG sin(theta) term of x
   double bg_profile_rel_sigma = 0.25;
-  double coefficient_rel_sigma = 0.10;  // systematic uncertainty of every hydrodynamic derivative group
+  double bg_measured_sigma_m = 0.0005;  // a roll test's accuracy
+  // Prior width of every hydrodynamic derivative group; unset = 30 % and an
+  // unknown Munk structure (0.5 +- 0.5) unless the profile states it; set
+  // (--coefficient-sigma) = that width for every group, Munk as the profile says.
+  std::optional<double> coefficient_rel_sigma;
+  // Open-water law of the propeller (the simulator's K_T = K_T0 (1 - (J/c1)^c2),
+  // torque taken proportional to K_T): the torque regressor is rpm^2 K_T/K_T0
+  // at each segment's advance ratio, not rpm^2 alone. Unset = rpm^2.
+  struct PropellerLaw {
+    double diameter_m = 0.0, c1 = 1.0, c2 = 1.0, wake_fraction = 0.0;
+  };
+  std::optional<PropellerLaw> propeller;
+  // Steady segments of earlier missions of this configuration with their
+  // known weight changes (calibration from the history): they share the
+  // vehicle's hydrodynamics, not its roll.
+  std::vector<SteadySegmentMeans> history;
+  // Propeller torque at 100 rpm the profile assumes (sim_assumptions), N m; 0 = none.
+  double profile_torque_nm_per_100rpm2 = 0.0;
   double min_speed2_spread = 1.3;       // max(u^2)/min(u^2) needed to fit the elevator zero offset
   bool log_has_speed = false, log_has_elevator = false, log_has_rpm = false;
 };
@@ -60,6 +87,19 @@ struct AuvTrimEstimate {
   std::vector<double> segment_net_buoyancy_kg, segment_x_m;  // NaN where not computable
   // Without an elevator channel only W x_G - l (B - W) is determined (l = M_e/Z_e).
   std::optional<double> moment_combination_nm, moment_combination_sigma_nm, plane_lever_m;
+  // Identified hydrodynamic groups and propeller torque (issue 11), and the
+  // steady coefficients with the calibrated groups for forward prediction.
+  std::vector<CalibrationParameter> calibration;
+  std::optional<SteadyHydroCoefficients> calibrated;
+  double net_x_correlation = 0.0;
+  // A short addition to the next mission that would identify the rest
+  // (issue 11 item 5), with the sigmas predicted after it from the Fisher
+  // information of the same model.
+  struct Manoeuvre {
+    std::vector<std::string> legs;
+    double net_sigma_kg = 0.0, x_sigma_m = 0.0;
+  };
+  std::optional<Manoeuvre> manoeuvre;
   std::vector<std::string> notes, warnings;
 };
 

@@ -80,6 +80,8 @@ bool inRange(double v, const seawater::ValidRange& r) { return v >= r.min && v <
 
 struct WaterResult {
   MeanEstimate T, S, rho, p, z;
+  // Per window (NaN where the window has no CTD sample): the segment's own water.
+  std::vector<double> win_rho, win_T, win_p;
   std::string salinity_source, density_source;
   std::size_t skipped = 0;
 };
@@ -103,6 +105,8 @@ WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& w
   const double gap = 60.0;
   SeriesCursor cS(sS, false, gap), cC(sC, false, gap), cP(sP, false, gap), cR(sR, false, gap), cZ(depth, false, gap);
   MeanAccumulator aT, aS, aR, aP, aZ;
+  std::vector<double> nR(win.size(), 0.0), sR_(win.size(), 0.0), nT(win.size(), 0.0), sT(win.size(), 0.0),
+      nP(win.size(), 0.0), sP_(win.size(), 0.0);
   std::size_t last = static_cast<std::size_t>(-1);
   out.salinity_source = hasS ? "log" : (hasC ? "PSS-78 from conductivity" : "");
   out.density_source = hasRho ? "log" : "EOS-80 from temperature, salinity and pressure";
@@ -117,9 +121,10 @@ WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& w
       last = w;
     }
     aZ.add(z);
-    if (!std::isnan(p)) aP.add(p);
+    if (!std::isnan(p)) aP.add(p), nP[w] += 1, sP_[w] += p;
     if (!hasT) {  // density-only log
       aR.add(v);
+      nR[w] += 1, sR_[w] += v;
       return;
     }
     const double T = v;
@@ -131,6 +136,7 @@ WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& w
         S = seawater::salinityFromConductivity(C, T, p);
     }
     aT.add(T);
+    nT[w] += 1, sT[w] += T;
     if (!std::isnan(S)) aS.add(S);
     double rho = hasRho ? cR.at(t) : kNaN;
     if (!hasRho) {
@@ -140,8 +146,17 @@ WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& w
       else
         ++out.skipped;
     }
-    if (!std::isnan(rho)) aR.add(rho);
+    if (!std::isnan(rho)) aR.add(rho), nR[w] += 1, sR_[w] += rho;
   });
+  auto meanOf = [](const std::vector<double>& n, const std::vector<double>& sum) {
+    std::vector<double> m(n.size(), kNaN);
+    for (std::size_t i = 0; i < n.size(); ++i)
+      if (n[i] > 0) m[i] = sum[i] / n[i];
+    return m;
+  };
+  out.win_rho = meanOf(nR, sR_);
+  out.win_T = meanOf(nT, sT);
+  out.win_p = meanOf(nP, sP_);
   out.T = aT.result(model);
   out.S = aS.result(model);
   out.rho = aR.result(model);
@@ -155,6 +170,31 @@ double parseNumberAfter(const std::string& s, std::size_t pos) {
   char* end = nullptr;
   const double v = std::strtod(begin, &end);
   return end == begin ? kNaN : v;
+}
+
+// The propeller reaction torque at 100 rpm the profile's simulator
+// assumptions imply (rho n^2 D^5 K_Q0), 0 when the profile has none.
+double profileTorqueAt100Rpm(const VehicleProfile& v, double rho) {
+  if (!v.sections.contains("sim_assumptions") || !v.sections.contains("actuators")) return 0.0;
+  const nlohmann::json& a = v.sections["sim_assumptions"];
+  const nlohmann::json& act = v.sections["actuators"];
+  if (!a.contains("prop_KQ0") || !act.contains("propeller") || !act["propeller"].contains("diameter_m")) return 0.0;
+  if (!a["prop_KQ0"].is_number() || !act["propeller"]["diameter_m"].is_number()) return 0.0;
+  const double n = 100.0 / 60.0, D = act["propeller"]["diameter_m"].get<double>();
+  return rho * n * n * std::pow(D, 5) * a["prop_KQ0"].get<double>();
+}
+
+std::optional<AuvTrimContext::PropellerLaw> propellerLawFromProfile(const VehicleProfile& v) {
+  if (!v.sections.contains("actuators") || !v.sections["actuators"].contains("propeller")) return std::nullopt;
+  const nlohmann::json& p = v.sections["actuators"]["propeller"];
+  auto num = [&](const char* k, double fallback) { return p.contains(k) && p[k].is_number() ? p[k].get<double>() : fallback; };
+  AuvTrimContext::PropellerLaw law;
+  law.diameter_m = num("diameter_m", 0.0);
+  law.c1 = num("c_prop1", 0.0);
+  law.c2 = num("c_prop2", 1.0);
+  law.wake_fraction = num("wake_fraction", 0.0);
+  if (!(law.diameter_m > 0.0) || !(law.c1 > 0.0)) return std::nullopt;
+  return law;
 }
 
 nlohmann::json numOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
@@ -331,9 +371,25 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     std::string why;
     const std::optional<SteadyHydroCoefficients> coeffs = steadyHydroFromProfile(v, why);
     std::vector<SteadySegmentMeans> means(nw);
-    for (std::size_t w = 0; w < nw; ++w)
+    // Each segment's own water: a leg at another depth flies a known change
+    // of buoyancy (in-situ density and the profile's hull law).
+    const bool perWindowWater = water.win_rho.size() == nw && water.rho.valid();
+    const double Tref = water.T.valid() ? water.T.mean : v.hull.reference_temperature_degC;
+    const double pref = water.p.valid() ? water.p.mean : 0.0;
+    const double Bref = rho * v.hull.volumeAt(Tref, pref);  // kg
+    for (std::size_t w = 0; w < nw; ++w) {
       means[w] = {win[w].start_s, win[w].end_s, speed.at(w), pitch.at(w), roll.at(w), elev.at(w), zRate.at(w), rpm.at(w)};
+      if (perWindowWater && std::isfinite(water.win_rho[w])) {
+        const double Ti = std::isfinite(water.win_T[w]) ? water.win_T[w] : Tref;
+        const double pi = std::isfinite(water.win_p[w]) ? water.win_p[w] : pref;
+        means[w].density_kgm3 = water.win_rho[w];
+        means[w].buoyancy_n = units::g0 * water.win_rho[w] * v.hull.volumeAt(Ti, pi);
+        means[w].buoyancy_change_n = means[w].buoyancy_n - units::g0 * Bref;
+      }
+    }
     AuvTrimContext ctx;
+    ctx.profile_torque_nm_per_100rpm2 = profileTorqueAt100Rpm(v, rho);
+    ctx.propeller = propellerLawFromProfile(v);
     ctx.weight_n = (v.mass_kg + installed) * units::g0;
     ctx.density_kgm3 = rho;
     ctx.bg_measured_m = o.bg_m;
@@ -343,7 +399,33 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     ctx.log_has_speed = hasSamples(log, "speed");
     ctx.log_has_elevator = hasSamples(log, "elevator");
     ctx.log_has_rpm = hasSamples(log, "prop_rpm");
+    // History: the same vehicle with other pieces. Its segments join the
+    // calibration with the known mass and moment changes since.
+    for (const HistoryMission& h : o.history) {
+      if (!h.installed_kg.empty() && h.installed_kg.size() != v.points.size())
+        throw InputError("history.installed", "has " + std::to_string(h.installed_kg.size()) + " values",
+                         "give one kg value per adjustment point, in profile order");
+      double dm = 0.0, moment = 0.0, then = 0.0;
+      for (std::size_t i = 0; i < v.points.size(); ++i) {
+        const double now_i = o.installed_kg.empty() ? 0.0 : o.installed_kg[i];
+        const double then_i = h.installed_kg.empty() ? 0.0 : h.installed_kg[i];
+        then += then_i;
+        dm += now_i - then_i;
+        moment += units::g0 * (now_i - then_i) * (v.points[i].position_m.x() - v.cb_m.x());
+      }
+      for (SteadySegmentMeans s : h.segments) {
+        if (!std::isfinite(s.buoyancy_n)) continue;
+        s.buoyancy_change_n = s.buoyancy_n - units::g0 * Bref + units::g0 * dm;
+        s.weight_n = (v.mass_kg + then) * units::g0;
+        s.moment_offset_nm = -moment;
+        s.from_history = true;
+        ctx.history.push_back(s);
+      }
+    }
     const AuvTrimEstimate e = estimateAuvTrim(means, coeffs ? &*coeffs : nullptr, why, ctx);
+    for (std::size_t w = 0; w < nw; ++w)
+      if (std::isfinite(e.segment_net_buoyancy_kg.empty() ? kNaN : e.segment_net_buoyancy_kg[w]))
+        rep.steady_segments.push_back(means[w]);
     rep.net_buoyancy_kg = {e.buoyancy_identified, e.buoyancy_identified ? e.net_buoyancy_kg : kNaN,
                            e.buoyancy_identified ? e.net_buoyancy_sigma_kg : kNaN, e.buoyancy_why};
     rep.cg_x_mm = {e.x_identified, e.x_identified ? units::mToMm(e.x_m) : kNaN,
@@ -358,6 +440,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
       rep.cruise_cg_y_mm = {e.y_cruise_identified, e.y_cruise_identified ? units::mToMm(e.y_cruise_m) : kNaN,
                             e.y_cruise_identified ? units::mToMm(e.y_cruise_sigma_m) : kNaN, e.y_why};
     }
+    rep.calibration = e.calibration;
     segNb = e.segment_net_buoyancy_kg;
     segX = e.segment_x_m;
     for (const auto& n : e.notes) rep.notes.push_back(n);
@@ -370,6 +453,22 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     d["bg_source"] = o.bg_m ? "--bg-mm" : "profile";
     d["segments_used"] = e.segments_used;
     d["chi2_per_dof"] = e.chi2_per_dof;
+    if (e.buoyancy_identified) d["net_cg_x_correlation"] = e.net_x_correlation;
+    if (e.manoeuvre)
+      d["calibration_manoeuvre"] = {{"legs", e.manoeuvre->legs},
+                                    {"expected_sigma", {{"net_buoyancy_kg", e.manoeuvre->net_sigma_kg},
+                                                        {"cg_x_mm", units::mToMm(e.manoeuvre->x_sigma_m)}}}};
+    if (e.calibrated) {
+      // The calibrated steady coefficients (Munk moment inside M_w), for
+      // forward prediction by the planner.
+      const SteadyHydroCoefficients& k = *e.calibrated;
+      d["calibrated_hydrodynamics"] = {{"reference_length_m", k.reference_length_m}, {"Zw_prime", k.Zw_prime},
+                                        {"Mw_prime", k.Mw_prime}, {"Zww_kg_per_m", k.Zww_kg_per_m},
+                                        {"Mww_kg", k.Mww_kg}, {"Xudot_kg", k.Xudot_kg}, {"Zwdot_kg", k.Zwdot_kg},
+                                        {"munk_moment", "inside_Mw"},
+                                        {"Z_uud_kg_per_m_deg", k.Z_e_per_deg}, {"M_uud_kg_per_deg", k.M_e_per_deg},
+                                        {"positive_deflection", "trailing_edge_down"}};
+    }
     if (e.roll_static_known) d["roll_static_deg"] = {{"value", e.roll_static_deg}, {"sigma", e.roll_static_sigma_deg}};
     if (e.elevator_bias_fitted)
       d["elevator_zero_offset_deg"] = {{"value", e.elevator_bias_deg}, {"sigma", e.elevator_bias_sigma_deg}};

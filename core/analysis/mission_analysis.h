@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/analysis_report.h"
+#include "analysis/auv_trim_estimation.h"
 #include "analysis/glider_flight.h"
 #include "analysis/glider_target.h"
 #include "analysis/segments.h"
@@ -17,6 +18,13 @@
 #include "vehicle/vehicle_profile.h"
 
 namespace auv::analysis {
+
+// An earlier analysed mission of the same configuration: its steady
+// segments (AnalysisReport::steady_segments) and what was installed then.
+struct HistoryMission {
+  std::vector<SteadySegmentMeans> segments;
+  std::vector<double> installed_kg;
+};
 
 struct AnalysisOptions {
   std::string log_name;
@@ -27,7 +35,9 @@ struct AnalysisOptions {
   // the bottom of its deepest yo; analysis/glider_target.h).
   GliderTargetRequest glider_target;
   SegmentOptions segments;           // `glider` is set from the vehicle kind
-  double coefficient_rel_sigma = 0.10;
+  // Prior width of each hydrodynamic derivative group in the calibration
+  // (--coefficient-sigma); unset = 30 % and an unknown Munk structure.
+  std::optional<double> coefficient_rel_sigma;
   double bg_profile_rel_sigma = 0.25;
   double default_density_kgm3 = 1025.0;  // only when the log has no CTD
   // Gliders
@@ -40,6 +50,9 @@ struct AnalysisOptions {
   double glider_pitch_bias_sigma_deg = 0.5;
   GliderFitOptions glider_fit;
   bool classic = true;
+  // AUVs: earlier missions of this configuration; with a known weight change
+  // between them they calibrate the hydrodynamics jointly (issue 11 item 3).
+  std::vector<HistoryMission> history;
 };
 
 // Throws InputError when the log has no usable depth/pressure or `installed_kg`

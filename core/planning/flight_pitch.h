@@ -14,7 +14,14 @@ namespace auv {
 
 // nullopt when the profile has no hydrodynamics with planes, the speed is
 // unknown (<= 0) or no level trim exists within +-30 deg.
+// `calibrated`: a "hydrodynamics" section calibrated from the log (TrimEstimate::
+// calibrated_hydrodynamics), used instead of the profile's when given.
 std::optional<double> flightPitchDeg(const VehicleProfile& v, double speed_mps, double mass_kg,
-                                     const Eigen::Vector3d& cg_m, const PlannedPointResult& operating);
+                                     const Eigen::Vector3d& cg_m, const PlannedPointResult& operating,
+                                     const std::optional<nlohmann::json>& calibrated = std::nullopt);
+
+// Plane lever l = M_e / Z_e [m] (calibrated or profile): flying level at zero
+// pitch needs W x_G = l (B - W), at every speed. nullopt without planes.
+std::optional<double> planeLeverM(const VehicleProfile& v, const std::optional<nlohmann::json>& calibrated);
 
 }  // namespace auv

@@ -81,6 +81,7 @@ nlohmann::json toJson(const PreMissionPlan& p) {
       {"mass_kg", r6(p.vehicle.mass.mass_kg)},
       {"mass_sigma_kg", r6(p.vehicle.mass_sigma_kg)}};
   j["water"] = waterJson(p.at_points.front().water, p.at_points.front().state);
+  if (p.calibration_manoeuvre) j["calibration_manoeuvre"] = *p.calibration_manoeuvre;
   j["warnings"] = p.warnings;
   j["notes"] = p.notes;
   if (!p.details.empty()) j["details"] = p.details;

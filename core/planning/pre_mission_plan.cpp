@@ -119,10 +119,12 @@ void attitudeSigmas(const BallastProblem& pr, const std::vector<std::vector<int>
 void predictFlightPitch(const VehicleProfile& v, const TrimEstimate& e, const EstimatedVehicle& ev,
                         const BallastSolution& sol, PreMissionPlan& out) {
   const PlannedPointResult& op = out.at_points.front();
-  out.flight_pitch_before_deg = flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg, ev.mass.cg_m, op);
+  out.flight_pitch_before_deg =
+      flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg, ev.mass.cg_m, op, e.calibrated_hydrodynamics);
   double added = 0.0;
   for (const auto& p : out.points) added += p.add_kg;
-  out.flight_pitch_after_deg = flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg + added, sol.cg_m, op);
+  out.flight_pitch_after_deg =
+      flightPitchDeg(v, e.cruise_speed_mps, ev.mass.mass_kg + added, sol.cg_m, op, e.calibrated_hydrodynamics);
   if (!out.flight_pitch_after_deg) return;
   out.flight_speed_mps = e.cruise_speed_mps;
   out.flight_pitch_in_band = std::abs(*out.flight_pitch_after_deg) <= v.spec.pitch_tolerance_deg;
@@ -266,6 +268,20 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     out.delta = classicMove(v, in, pr, out);
     sol = evaluateMove(pr, out.delta);
   } else {
+    // Level flight at zero pitch needs W x_G = l (B - W) (planes carry the
+    // net buoyancy, the hull no lift): with the calibrated model the solver
+    // aims the CG there rather than over the CB, so the vehicle flies level
+    // at every speed (thesis §5.3.2 judges pitch in flight).
+    if (in.estimate.calibrated_hydrodynamics) {
+      if (const std::optional<double> l = planeLeverM(v, in.estimate.calibrated_hydrodynamics)) {
+        const double net_aim = 0.5 * (out.band_lo_kg + out.band_hi_kg);
+        // The mass after the move is not known before solving; a few kg in
+        // 1500 change x by < 0.5 %.
+        const double dx = *l * net_aim / out.vehicle.mass.mass_kg;
+        pr.cb_m.x() += dx;
+        out.details["flight_level_cg_x_mm"] = units::mToMm(pr.cb_m.x() - v.cb_m.x());
+      }
+    }
     // No kit total inside [lo, hi]: the solver would take the nearest, which
     // may lie under the safety margin. Widen the band upward, one smallest
     // piece at a time, until the answer is safe or nothing more is removable.
@@ -278,6 +294,11 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     out.delta = sol.delta;
     out.notes = sol.notes;
     out.warnings = sol.warnings;
+  }
+  if (pr.cb_m.x() != v.cb_m.x()) {
+    // Report the attitude at rest about the real CB.
+    pr.cb_m = v.cb_m;
+    sol = evaluateMove(pr, out.delta);
   }
   fillPoints(pr, out.delta, out);
   out.predicted.net_buoyancy_kg = sol.net_buoyancy_kg;
@@ -301,6 +322,20 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     if (r.net_after_kg < out.margin_kg - 1e-6) out.safe = false;
   }
   predictFlightPitch(v, in.estimate, out.vehicle, sol, out);
+  // Too wide for the band: the margin alone takes half of it, or the
+  // answer ends outside it. Then ask for the manoeuvre.
+  if (in.estimate.calibration_manoeuvre && in.policy != PlanPolicy::Classic &&
+      (!out.buoyancy_in_band || 2.0 * out.margin_kg > spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg)) {
+    out.calibration_manoeuvre = in.estimate.calibration_manoeuvre;
+    const nlohmann::json& m = *out.calibration_manoeuvre;
+    char buf[240];
+    std::snprintf(buf, sizeof buf,
+                  "the net-buoyancy sigma (%.2f kg) is too wide for the %.1f kg band: add the calibration manoeuvre to "
+                  "the next mission (%zu short legs at different speeds); it would bring the sigma to about %.2f kg",
+                  out.net_sigma_kg, spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg, m["legs"].size(),
+                  m["expected_sigma"]["net_buoyancy_kg"].get<double>());
+    out.notes.emplace_back(buf);
+  }
   explainPlan(v, pr, out);
   if (in.estimate.cg_y_basis == "cruise" && in.estimate.cg_y_m) {
     char buf[200];

@@ -79,6 +79,10 @@ struct PreMissionPlan {
   bool safe = false;            // net after >= margin at every point
   bool buoyancy_in_band = false, pitch_in_band = false, roll_in_band = false;
   std::vector<std::string> explanations;  // one sentence per changed point
+  // When the estimate's sigma is too wide for the spec band (the margin
+  // pushes the vehicle out of it): the short addition to the next mission
+  // that would identify the rest {legs, expected_sigma} (issue 11 item 5).
+  std::optional<nlohmann::json> calibration_manoeuvre;
   std::vector<std::string> notes, warnings;
   nlohmann::json details = nlohmann::json::object();
 };

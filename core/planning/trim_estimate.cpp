@@ -75,6 +75,13 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
     e.pitch_error_deg = optionalNumber(er, "pitch_deg");
     e.roll_deg = optionalNumber(er, "roll_deg");
   }
+  if (report.contains("details") && report["details"].is_object() && report["details"].contains("auv_estimate")) {
+    const nlohmann::json& d = report["details"]["auv_estimate"];
+    if (d.is_object() && d.contains("calibrated_hydrodynamics") && d["calibrated_hydrodynamics"].is_object())
+      e.calibrated_hydrodynamics = d["calibrated_hydrodynamics"];
+    if (d.is_object() && d.contains("calibration_manoeuvre") && d["calibration_manoeuvre"].is_object())
+      e.calibration_manoeuvre = d["calibration_manoeuvre"];
+  }
   return e;
 }
 

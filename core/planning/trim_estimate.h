@@ -30,6 +30,12 @@ struct TrimEstimate {
   // depth commanded - measured (+ = light), pitch measured - commanded (+ = nose
   // up), roll (+ = starboard down).
   std::optional<double> depth_error_m, pitch_error_deg, roll_deg;
+  // The steady hydrodynamics the analysis calibrated from the log (a
+  // "hydrodynamics" section: details.auv_estimate.calibrated_hydrodynamics),
+  // for the flight-pitch prediction; unset = the profile's.
+  std::optional<nlohmann::json> calibrated_hydrodynamics;
+  // The analysis's proposed calibration manoeuvre {legs, expected_sigma}.
+  std::optional<nlohmann::json> calibration_manoeuvre;
 };
 
 // Reads the analysis report JSON (issue #3 contract: net_buoyancy_kg,

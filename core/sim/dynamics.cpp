@@ -174,7 +174,10 @@ StateVector Dynamics::evaluate(const StateVector& s, const Trig1* theta0, const 
   // c13 = -m (x_g q - w) - Z_wdot w, c23 = -m (z_g q + u) + X_udot u.
   const double c13 = -k.m_xg * q + k.m_minus_Zwdot * w;
   const double c23 = -k.m_zg * q - k.m_minus_Xudot * u;
-  const Force4 cor(-c13 * q, -c23 * q, c13 * u + c23 * w, 0.0);
+  // The added-mass part of c13 u + c23 w is the Munk moment (X_udot - Z_wdot) u w;
+  // munk_factor 0 removes it (it is then inside M_w).
+  const double munk_removed = (1.0 - h.munk_factor) * (h.Xudot_kg - h.Zwdot_kg) * u * w;
+  const Force4 cor(-c13 * q, -c23 * q, c13 * u + c23 * w - munk_removed, 0.0);
 
   // -g(eta) (eq. 5), CB at the origin.
   const Eigen::Vector4d g = restoringOnTrig(k.W_minus_B, k.Wrg, sph, cph, sth, cth);

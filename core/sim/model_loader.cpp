@@ -44,6 +44,11 @@ Hydrodynamics readHydro(const JsonReader& r) {
   h.Zqq_kgm = r.numberIn("Zqq_kgm_per_rad2", -1e6, 1e6);
   h.Mww_kg = r.numberIn("Mww_kg", -1e6, 1e6);
   h.Mqq_kgm2 = r.numberIn("Mqq_kgm2_per_rad2", -1e6, 0.0);
+  const std::string munk = r.text("munk_moment", "added");
+  if (munk != "added" && munk != "inside_Mw")
+    r.fail("munk_moment", "unknown structure '" + munk + "'",
+           "use \"added\" (Munk moment on top of M_w, the default) or \"inside_Mw\"");
+  h.munk_factor = munk == "inside_Mw" ? 0.0 : 1.0;
   return h;
 }
 

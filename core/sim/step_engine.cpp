@@ -28,6 +28,7 @@ void StepEngine::start(const InitialState& init, const VehicleLoading& loading) 
   act_.prop_rps = init.prop_rps;
   yaw_ = {};
   yaw_.heading_rad = init.heading_rad;
+  t_s_ = 0.0;
   sampleWater();
   fm_ = flownMass(*model_, loading.extra_masses, loading.net_buoyancy_n, loading.error, B_);
   dyn_.setMassProperties(fm_.mass_kg, fm_.r_g_m, fm_.extra_Ixx, fm_.extra_Iyy);
@@ -37,7 +38,7 @@ void StepEngine::start(const InitialState& init, const VehicleLoading& loading) 
 }
 
 void StepEngine::sampleWater() {
-  ws_ = waterColumn_->at(std::max(0.0, s_[kZ]));
+  ws_ = waterColumn_->at(std::max(0.0, s_[kZ]), t_s_);
   B_ = sim::buoyancyN(*model_, ws_, s_[kZ], surface_);
 }
 
@@ -100,6 +101,7 @@ void StepEngine::stepHeld(double W) {
   dyn_.setStepInputs(in);
   const double u0 = s_[kU], q0 = s_[kQ];
   dyn_.rk4Step(s_, dt_);
+  t_s_ += dt_;
   const Trig1& th = dyn_.lastStepPitch();
   const Trig1& ph = dyn_.lastStepRoll();
   advanceYaw(yawK_, ws_.density_kgm3, u0, q0, th.c, ph.s, ph.c, dt_, yaw_);

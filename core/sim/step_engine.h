@@ -91,6 +91,7 @@ class StepEngine {
   YawState yaw_;
   FlownMass fm_;
   double W0_ = 0.0, B_ = 0.0, B_start_ = 0.0;
+  double t_s_ = 0.0;  // time since start, for a moving water column
   WaterSample ws_;
   double energy_j_ = 0.0, hotel_j_ = 0.0, prop_j_ = 0.0, thruster_j_ = 0.0, fins_j_ = 0.0;
 };

@@ -39,6 +39,12 @@ struct Hydrodynamics {
   double Mqq_kgm2 = 0.0;
   double Kp_kgm2_per_s = 0.0;  // linear roll damping
   double Kpp_kgm2 = 0.0;       // quadratic roll damping
+  // Structure of the pitch moment in w: 1 adds the Munk moment (X_udot -
+  // Z_wdot) u w of the added-mass Coriolis terms on top of M_w (the Fossen
+  // form, the default); 0 takes it as already inside the tabulated M_w, as
+  // when M_w comes from a captive-model test of the whole hull. A truth drawn
+  // away from the profile uses either (sim/truth_draw.h).
+  double munk_factor = 1.0;
 };
 
 // Main propeller, eq. 11-14, plus a reaction torque for roll.

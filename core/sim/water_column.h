@@ -3,6 +3,8 @@
 // salinity and pressure against depth. In-situ density comes from core
 // seawater (EOS-80 with pressure) and is tabulated once on a depth grid, so
 // the step loop does one linear interpolation instead of an equation of state.
+#include <algorithm>
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -32,6 +34,24 @@ class WaterColumn {
   static WaterColumn fromCast(std::span<const CtdPoint> cast, double max_depth_m, double step_m = 1.0,
                               double latitude_deg = 45.0);
 
+  // Internal wave: the stratification moves up and down by
+  // amplitude sin(2 pi t / period + phase), so at a fixed depth the density,
+  // temperature and salinity oscillate (pressure does not). Zero amplitude = none.
+  void setInternalWave(double amplitude_m, double period_s, double phase_rad = 0.0) {
+    wave_amplitude_m_ = amplitude_m;
+    wave_omega_ = period_s > 0.0 ? 2.0 * 3.14159265358979323846 / period_s : 0.0;
+    wave_phase_ = phase_rad;
+  }
+  bool hasInternalWave() const { return wave_amplitude_m_ != 0.0 && wave_omega_ > 0.0; }
+  // The water at a depth at time t (s) of the run.
+  WaterSample at(double depth_m, double t_s) const {
+    if (!hasInternalWave()) return at(depth_m);
+    const double eta = wave_amplitude_m_ * std::sin(wave_omega_ * t_s + wave_phase_);
+    WaterSample s = at(std::max(0.0, depth_m - eta));
+    s.pressure_dbar = at(depth_m).pressure_dbar;
+    return s;
+  }
+
   WaterSample at(double depth_m) const {
     if (table_.size() == 1) {
       WaterSample s = table_[0];
@@ -56,6 +76,7 @@ class WaterColumn {
   std::vector<WaterSample> table_;
   double step_m_ = 1.0;
   double uniform_dbar_per_m_ = 0.0;
+  double wave_amplitude_m_ = 0.0, wave_omega_ = 0.0, wave_phase_ = 0.0;
 };
 
 }  // namespace auv::sim

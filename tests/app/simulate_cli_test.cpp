@@ -124,15 +124,24 @@ TEST(SimulateCli, SimulateThenAnalyzeRecoversTheBallastError) {
   ASSERT_EQ(a.code, 0) << a.err;
   const nlohmann::json j = nlohmann::json::parse(a.out);
   const MissionLog truth = readInterchangeCsv(log);
-  EXPECT_NEAR(j["net_buoyancy_kg"].get<double>(), meta(truth, "truth_net_buoyancy_mean_kg"), 0.3);
-  EXPECT_NEAR(j["cg_offset_mm"]["x"].get<double>(), meta(truth, "truth_cg_x_mm"), 2.0);
-  // The stated sigma follows the coefficient uncertainty (it dominates);
-  // the estimate itself does not move.
+  // Default priors (issue 11: 30 % per derivative group, Munk structure
+  // unknown): the truth lies within twice the posterior sigma, and the
+  // report lists what was calibrated.
+  const double nb = meta(truth, "truth_net_buoyancy_mean_kg"), x = meta(truth, "truth_cg_x_mm");
+  EXPECT_NEAR(j["net_buoyancy_kg"].get<double>(), nb, 2.0 * j["net_buoyancy_sigma_kg"].get<double>());
+  EXPECT_NEAR(j["cg_offset_mm"]["x"].get<double>(), x, 2.0 * j["cg_offset_sigma_mm"]["x"].get<double>());
+  ASSERT_TRUE(j["calibration"].is_array());
+  bool has_heave = false;
+  for (const auto& q : j["calibration"]) has_heave |= q["id"] == "heave_lift_scale";
+  EXPECT_TRUE(has_heave);
+  // --coefficient-sigma is the prior width: at 2 % (the simulator flies the
+  // profile's derivatives) the estimate is the profile model's and sharp.
   const auto c = runCli("analyze --vehicle " + profile_path + " --log " + log +
                         " --installed 7.2,7.2,25.2,25.2 --bg-mm 20 --coefficient-sigma 0.02 --json -");
   ASSERT_EQ(c.code, 0) << c.err;
   const nlohmann::json k = nlohmann::json::parse(c.out);
-  EXPECT_DOUBLE_EQ(k["net_buoyancy_kg"].get<double>(), j["net_buoyancy_kg"].get<double>());
+  EXPECT_NEAR(k["net_buoyancy_kg"].get<double>(), nb, 0.3);
+  EXPECT_NEAR(k["cg_offset_mm"]["x"].get<double>(), x, 2.0);
   EXPECT_LT(k["net_buoyancy_sigma_kg"].get<double>(), 0.5 * j["net_buoyancy_sigma_kg"].get<double>());
   // Roll at cruise (160 rpm) and the CG y that levels the vehicle there.
   EXPECT_GT(k["cruise"]["prop_rpm"].get<double>(), 150.0);

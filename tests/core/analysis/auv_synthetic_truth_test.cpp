@@ -50,9 +50,12 @@ TEST(AuvSyntheticTruth, RecoversNetBuoyancyAndCgAtRealisticNoise) {
     int steady = 0;
     for (const auto& s : r.segments) steady += s.used;
     EXPECT_EQ(steady, 3);
-    // The sigmas are honest but not useless.
-    EXPECT_LT(r.net_buoyancy_kg.sigma, 0.15);
-    EXPECT_LT(r.cg_x_mm.sigma, 2.0);
+    // The sigmas are honest but not useless. They are the calibration's
+    // posterior now (issue 11): every derivative group has a 30 % prior and
+    // three speeds at one depth leave the heave-force scale partly at it,
+    // so they grew from the flat 10 % term's 0.07-0.15 kg / 1-2 mm.
+    EXPECT_LT(r.net_buoyancy_kg.sigma, 0.25);
+    EXPECT_LT(r.cg_x_mm.sigma, 3.0);
     // Three speeds: the elevator zero offset was fitted (truth 0).
     ASSERT_TRUE(r.details["auv_estimate"].contains("elevator_zero_offset_deg"));
     EXPECT_NEAR(r.details["auv_estimate"]["elevator_zero_offset_deg"]["value"].get<double>(), 0.0, 1.0);
@@ -66,7 +69,10 @@ TEST(AuvSyntheticTruth, NegativeBuoyancyAndAftCg) {
   t.cg_m = {-0.012, -0.004, 0.06};
   const AnalysisReport r = analyzeMission(makeAuvLog(v, t), v, optionsFor(v, t));
   EXPECT_NEAR(r.net_buoyancy_kg.value, -0.4, 0.3);
-  EXPECT_NEAR(r.cg_x_mm.value, -12.0, 2.0);
+  // Within twice the posterior sigma (2.4 mm: the 30 % group priors the log
+  // does not narrow at one depth), where the old flat-10 % fit claimed 2 mm.
+  EXPECT_NEAR(r.cg_x_mm.value, -12.0, 2.0 * r.cg_x_mm.sigma);
+  EXPECT_LT(r.cg_x_mm.sigma, 3.0);
   EXPECT_NEAR(r.cg_y_mm.value, -4.0, 0.5);
 }
 

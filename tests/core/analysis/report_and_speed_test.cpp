@@ -99,5 +99,9 @@ TEST(AnalysisScale, DayLongTenHertzLogAnalyses) {
   o.bg_m = 0.06;
   const AnalysisReport r = analyzeMission(log, v, o);
   EXPECT_NEAR(r.net_buoyancy_kg.value, 0.6, 0.3);
-  EXPECT_NEAR(r.cg_x_mm.value, 8.0, 2.0);
+  // Within twice the calibration's posterior sigma (issue 11: 30 % group
+  // priors; this log's depths barely change the density, so the heave-force
+  // scale stays near its prior and CG x with it).
+  EXPECT_NEAR(r.cg_x_mm.value, 8.0, 2.0 * r.cg_x_mm.sigma);
+  EXPECT_LT(r.cg_x_mm.sigma, 3.0);
 }

@@ -74,7 +74,7 @@ sim::BallastError SimHarness::errorOf(const SimLoopCase& c) const {
 }
 
 SimMission SimHarness::fly(const SimLoopCase& c, const std::vector<double>& installed, const PlannedWater& w,
-                           std::uint64_t seed) const {
+                           std::uint64_t seed, const std::vector<analysis::HistoryMission>& history) const {
   sim::Scenario sc = plan_.scenario;
   for (auto& leg : sc.legs) leg.depth_m = w.depth_m;
   sc.initial_depth_m = w.depth_m;
@@ -93,10 +93,12 @@ SimMission SimHarness::fly(const SimLoopCase& c, const std::vector<double>& inst
   // (the pieces sit below the CB, so BG is not the profile's 20 mm).
   a.bg_m = units::mmToM(meta(log, "truth_cg_z_mm"));
   a.coefficient_rel_sigma = coefficient_rel_sigma_;
+  a.history = history;
   const analysis::AnalysisReport rep = analysis::analyzeMission(log, profile_, a);
 
   SimMission m;
   m.report = analysis::toJson(rep);
+  m.as_history = {rep.steady_segments, installed};
   m.net_kg = meta(log, "truth_net_buoyancy_mean_kg");
   m.truth.mass_kg = meta(log, "truth_mass_kg");
   m.truth.cg_m = profile_.cb_m + units::mmToM(1.0) * Eigen::Vector3d(meta(log, "truth_cg_x_mm"), meta(log, "truth_cg_y_mm"),
@@ -176,7 +178,10 @@ SimOutcome SimHarness::runTwice(const SimLoopCase& c, bool optional_pieces) cons
   SimOutcome o = runOnce(c, PlanPolicy::Exact, optional_pieces);
   const std::vector<double> first = applied(c.installed_kg, plan(o.before, c.installed_kg, c.water2, PlanPolicy::Exact,
                                                                  optional_pieces));
-  const PreMissionPlan p2 = plan(o.after, first, c.water2, PlanPolicy::Exact, optional_pieces);
+  // The second mission is analysed together with the first: the known
+  // weight change between them calibrates the vehicle (issue 11 item 3).
+  const SimMission second = fly(c, first, c.water2, c.seed + 1, {o.before.as_history});
+  const PreMissionPlan p2 = plan(second, first, c.water2, PlanPolicy::Exact, optional_pieces);
   const SimMission third = fly(c, applied(first, p2), c.water2, c.seed + 2);
   const SimMission best_flown = flyBest(c, o.after, c.water2, optional_pieces);
   o.after = third;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/mission_analysis.h"
 #include "closed_loop.h"
 #include "planning/pre_mission_plan.h"
 #include "sim/flown_mass.h"
@@ -40,6 +41,7 @@ struct SimMission {
   double cruise_pitch_deg = 0.0;  // mean pitch of the analysis's steady segments at cruise rpm
   double depth_error_m = 0.0, depth_error_ci95_m = 0.0;  // the analysis's, commanded - measured
   nlohmann::json report;         // the analysis's JSON report
+  analysis::HistoryMission as_history;  // its steady segments and pieces, for a later joint calibration
   Truth truth;
 };
 
@@ -66,8 +68,9 @@ class SimHarness {
   // hydrodynamic derivatives (10 % by default; here the simulator flies
   // exactly those derivatives, so a smaller value is the calibrated case).
   explicit SimHarness(SigmaOverride sigma = {}, double coefficient_rel_sigma = 0.10);
+  // history: earlier missions of this vehicle, calibrated jointly (issue 11 item 3).
   SimMission fly(const SimLoopCase& c, const std::vector<double>& installed_kg, const PlannedWater& w,
-                 std::uint64_t seed) const;
+                 std::uint64_t seed, const std::vector<analysis::HistoryMission>& history = {}) const;
   // The simulator's ballast error that makes mission 1 the case's truth.
   sim::BallastError errorOf(const SimLoopCase& c) const;
   SimOutcome runOnce(const SimLoopCase& c, PlanPolicy policy, bool optional_pieces) const;

@@ -1,0 +1,248 @@
+#include "analysis/auv_calibration.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "common/units.h"
+
+namespace auv::analysis {
+namespace {
+
+enum { kSpeed = 0, kPitch, kRoll, kElev, kRate };
+
+struct Priors {
+  Eigen::VectorXd mean, sigma;  // sigma <= 0: no prior (flat)
+};
+
+// Row pair of one segment: A p = b (residual A p - b).
+void rowsOf(const SteadyHydroCoefficients& c, double W, double rho_ref, const CalibrationSegment& s,
+            const std::array<double, 5>& v, Eigen::Matrix<double, 2, kCalibrationCount>& A, Eigen::Vector2d& b) {
+  const double u = v[kSpeed], au = std::abs(u), th = v[kPitch], ph = v[kRoll];
+  const double cc = std::cos(th) * std::cos(ph);
+  const double w = (u * std::sin(th) + v[kRate]) / cc;
+  const double uu = au * u;
+  const double L = c.reference_length_m;
+  const double kZw = 0.5 * s.density_kgm3 * L * L * c.Zw_prime;
+  const double rho_ratio = s.density_kgm3 / rho_ref;
+  A.setZero();
+  A(0, kNet) = cc;
+  A(0, kHeave) = -kZw * au * w;
+  A(0, kCrossflow) = -c.Zww_kg_per_m * std::abs(w) * w;
+  A(1, kXg) = W * cc;
+  A(1, kBg) = (s.weight_n > 0.0 ? s.weight_n : W) * std::sin(th);
+  A(1, kPitchUw) = -rho_ratio * u * w;
+  A(1, kCrossflow) = -c.Mww_kg * std::abs(w) * w;
+  if (c.has_planes) {
+    A(0, kPlanes) = -c.Z_e_per_deg * uu * v[kElev];
+    A(0, kPlaneOffset) = c.Z_e_per_deg * uu;
+    A(1, kPlanes) = -c.M_e_per_deg * uu * v[kElev];
+    A(1, kPlaneOffset) = c.M_e_per_deg * uu;
+  }
+  b << -s.buoyancy_change_n * cc, -s.moment_offset_nm * cc;
+}
+
+struct Solved {
+  bool ok = false;
+  Eigen::VectorXd p;
+  Eigen::MatrixXd cov, data_info;
+  double chi2_data = 0.0;
+  int n_data = 0;
+};
+
+// Whitened data rows (measurement covariance of each pair propagated from the
+// segment means' standard errors at p0) plus the prior rows.
+Solved solve(const SteadyHydroCoefficients& c, double W, double rho_ref, const std::vector<CalibrationSegment>& segs,
+             const Priors& pr, const Eigen::VectorXd& p0) {
+  const auto n = static_cast<Eigen::Index>(segs.size());
+  int n_prior = 0;
+  for (Eigen::Index k = 0; k < kCalibrationCount; ++k) n_prior += pr.sigma(k) > 0 ? 1 : 0;
+  Eigen::MatrixXd At(2 * n + n_prior, kCalibrationCount);
+  Eigen::VectorXd bt(At.rows());
+  Eigen::Matrix<double, 2, kCalibrationCount> A;
+  Eigen::Vector2d b;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const CalibrationSegment& s = segs[static_cast<std::size_t>(i)];
+    auto resid = [&](const std::array<double, 5>& v) {
+      Eigen::Matrix<double, 2, kCalibrationCount> Ai;
+      Eigen::Vector2d bi;
+      rowsOf(c, W, rho_ref, s, v, Ai, bi);
+      return Eigen::Vector2d(Ai * p0 - bi);
+    };
+    Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
+    for (int j = 0; j < 5; ++j) {
+      if (!(s.se[j] > 0.0)) continue;
+      std::array<double, 5> hi = s.v, lo = s.v;
+      hi[j] += s.se[j];
+      lo[j] -= s.se[j];
+      const Eigen::Vector2d d = 0.5 * (resid(hi) - resid(lo));
+      C += d * d.transpose();
+    }
+    C(0, 0) += 1e-6;  // 1 mN, 1 mN m floors: a noise-free segment keeps a finite weight
+    C(1, 1) += 1e-6;
+    const Eigen::Matrix2d Linv = Eigen::Matrix2d(C.llt().matrixL()).inverse();
+    rowsOf(c, W, rho_ref, s, s.v, A, b);
+    At.middleRows(2 * i, 2) = Linv * A;
+    bt.segment(2 * i, 2) = Linv * b;
+  }
+  Eigen::Index row = 2 * n;
+  for (Eigen::Index k = 0; k < kCalibrationCount; ++k) {
+    if (!(pr.sigma(k) > 0)) continue;
+    At.row(row).setZero();
+    At(row, k) = 1.0 / pr.sigma(k);
+    bt(row) = pr.mean(k) / pr.sigma(k);
+    ++row;
+  }
+  Solved out;
+  // Column scaling keeps the normal matrix well conditioned (N, m, deg mix).
+  Eigen::VectorXd scale = At.colwise().norm().transpose();
+  for (Eigen::Index k = 0; k < scale.size(); ++k) scale(k) = scale(k) > 0 ? 1.0 / scale(k) : 1.0;
+  const Eigen::MatrixXd As = At * scale.asDiagonal();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(As, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const auto& sv = svd.singularValues();
+  if (!(sv(sv.size() - 1) > 1e-12 * sv(0))) return out;
+  out.ok = true;
+  out.p = scale.asDiagonal() * svd.solve(bt);
+  const Eigen::MatrixXd Vs = svd.matrixV() * sv.cwiseInverse().asDiagonal();
+  out.cov = scale.asDiagonal() * (Vs * Vs.transpose()) * scale.asDiagonal();
+  const Eigen::MatrixXd Ad = At.topRows(2 * n);
+  out.data_info = Ad.transpose() * Ad;
+  out.chi2_data = (Ad * out.p - bt.head(2 * n)).squaredNorm();
+  out.n_data = static_cast<int>(2 * n);
+  return out;
+}
+
+}  // namespace
+
+double pitchMomentUw(const SteadyHydroCoefficients& c, double rho, double munk_factor) {
+  const double L = c.reference_length_m;
+  return 0.5 * rho * L * L * L * c.Mw_prime + munk_factor * (c.Xudot_kg - c.Zwdot_kg);
+}
+
+SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, double rho_ref,
+                                  const std::vector<CalibrationSegment>& segs, const CalibrationPriors& cp) {
+  SteadyCalibration out;
+  if (segs.empty()) return out;
+  const double r = cp.group_rel_sigma;
+  const double L = c.reference_length_m;
+  const double kMw = 0.5 * rho_ref * L * L * L * c.Mw_prime;
+  const double munk = c.Xudot_kg - c.Zwdot_kg;
+  Priors pr;
+  pr.mean = Eigen::VectorXd::Zero(kCalibrationCount);
+  pr.sigma = Eigen::VectorXd::Zero(kCalibrationCount);
+  pr.mean << 0.0, 0.0, 1.0, kMw + cp.munk_factor * munk, 1.0, 1.0, 0.0, cp.bg_m;
+  pr.sigma << 0.0, 0.0, r, std::hypot(r * kMw, cp.munk_sigma * munk), r, c.has_planes ? r : 0.0,
+      c.has_planes ? cp.elevator_offset_sigma_deg : 0.0, cp.bg_sigma_m;
+  if (!c.has_planes) pr.mean(kPlanes) = pr.mean(kPlaneOffset) = 0.0;
+  // Without planes their columns are zero: pin them with a tight prior.
+  if (!c.has_planes) pr.sigma(kPlanes) = pr.sigma(kPlaneOffset) = 1e-9;
+
+  Eigen::VectorXd p = pr.mean;
+  Solved s;
+  for (int pass = 0; pass < 3; ++pass) {  // the measurement covariance depends on p
+    s = solve(c, W, rho_ref, segs, pr, p);
+    if (!s.ok) return out;
+    p = s.p;
+  }
+  out.ok = true;
+  out.p = s.p;
+  out.cov = s.cov;
+  out.data_parameters = (s.cov * s.data_info).trace();
+  const double dof = s.n_data - out.data_parameters;
+  out.chi2_per_dof = dof > 0.5 ? s.chi2_data / dof : 0.0;
+  // Scatter beyond the segment standard errors (unsteadiness, internal
+  // waves) widens everything the data determined.
+  if (out.chi2_per_dof > 1.0) {
+    const double f = out.chi2_per_dof;
+    // Inflate the data information, keep the priors: cov = (f^-1 I_data + I_prior)^-1.
+    Eigen::MatrixXd prior_info = Eigen::MatrixXd::Zero(kCalibrationCount, kCalibrationCount);
+    for (int k = 0; k < kCalibrationCount; ++k)
+      if (pr.sigma(k) > 0) prior_info(k, k) = 1.0 / (pr.sigma(k) * pr.sigma(k));
+    out.cov = (s.data_info / f + prior_info).inverse();
+  }
+  auto param = [&](const char* id, const char* unit, int k, double profile_value) {
+    CalibrationParameter q;
+    q.id = id;
+    q.unit = unit;
+    q.value = out.p(k);
+    q.sigma = std::sqrt(std::max(0.0, out.cov(k, k)));
+    q.prior_value = pr.mean(k);
+    q.prior_sigma = pr.sigma(k);
+    q.profile_value = profile_value;
+    q.identified = q.sigma < 0.5 * q.prior_sigma;
+    out.parameters.push_back(q);
+  };
+  param("heave_lift_scale", "1", kHeave, 1.0);
+  param("pitch_moment_uw", "N m s2/m2", kPitchUw, kMw + c.munk_factor * munk);
+  param("crossflow_scale", "1", kCrossflow, 1.0);
+  if (c.has_planes) {
+    param("stern_plane_effectiveness", "1", kPlanes, 1.0);
+    // The offset itself is c / s_e; its sigma by first-order propagation.
+    const double se = out.p(kPlanes), cc = out.p(kPlaneOffset);
+    Eigen::Vector2d g(-cc / (se * se), 1.0 / se);
+    Eigen::Matrix2d S;
+    S << out.cov(kPlanes, kPlanes), out.cov(kPlanes, kPlaneOffset), out.cov(kPlaneOffset, kPlanes),
+        out.cov(kPlaneOffset, kPlaneOffset);
+    out.elevator_offset_deg = cc / se;
+    out.elevator_offset_sigma_deg = std::sqrt(std::max(0.0, g.dot(S * g)));
+    CalibrationParameter q;
+    q.id = "elevator_zero_offset";
+    q.unit = "deg";
+    q.value = out.elevator_offset_deg;
+    q.sigma = out.elevator_offset_sigma_deg;
+    q.prior_sigma = cp.elevator_offset_sigma_deg;
+    q.identified = q.sigma < 0.5 * q.prior_sigma;
+    out.parameters.push_back(q);
+  }
+  param("bg", "m", kBg, cp.bg_m);
+  return out;
+}
+
+Eigen::MatrixXd covarianceAfter(const SteadyHydroCoefficients& c, double W, double rho_ref, const SteadyCalibration& cal,
+                                const std::vector<CalibrationSegment>& planned) {
+  Eigen::MatrixXd info = cal.cov.inverse();
+  Eigen::Matrix<double, 2, kCalibrationCount> A;
+  Eigen::Vector2d b;
+  for (const CalibrationSegment& s : planned) {
+    auto resid = [&](const std::array<double, 5>& v) {
+      Eigen::Matrix<double, 2, kCalibrationCount> Ai;
+      Eigen::Vector2d bi;
+      rowsOf(c, W, rho_ref, s, v, Ai, bi);
+      return Eigen::Vector2d(Ai * cal.p - bi);
+    };
+    Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
+    for (int j = 0; j < 5; ++j) {
+      if (!(s.se[j] > 0.0)) continue;
+      std::array<double, 5> hi = s.v, lo = s.v;
+      hi[j] += s.se[j];
+      lo[j] -= s.se[j];
+      const Eigen::Vector2d d = 0.5 * (resid(hi) - resid(lo));
+      C += d * d.transpose();
+    }
+    C(0, 0) += 1e-6;
+    C(1, 1) += 1e-6;
+    rowsOf(c, W, rho_ref, s, s.v, A, b);
+    info += A.transpose() * C.inverse() * A;
+  }
+  return info.inverse();
+}
+
+SteadyHydroCoefficients calibratedCoefficients(const SteadyHydroCoefficients& c, double rho_ref,
+                                               const Eigen::VectorXd& p) {
+  SteadyHydroCoefficients k = c;
+  const double L = c.reference_length_m;
+  k.Zw_prime *= p(kHeave);
+  k.Zww_kg_per_m *= p(kCrossflow);
+  k.Mww_kg *= p(kCrossflow);
+  // The whole linear pitch moment as M_w' with the Munk moment inside it.
+  k.munk_factor = 0.0;
+  k.Mw_prime = p(kPitchUw) / (0.5 * rho_ref * L * L * L);
+  k.munk_stated = true;
+  if (c.has_planes) {
+    k.Z_e_per_deg *= p(kPlanes);
+    k.M_e_per_deg *= p(kPlanes);
+  }
+  return k;
+}
+
+}  // namespace auv::analysis

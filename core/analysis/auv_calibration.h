@@ -1,0 +1,83 @@
+#pragma once
+// Joint identification of an AUV's hydrodynamics and its ballast state from
+// steady level flight (issue 11 items 1, 2, 4). The steady balance of
+// auv_steady_model.h is linear in these named groups once the elevator zero
+// offset is carried as c = s_e e0:
+//
+//   heave: (dB + dB_i) cc = s_Z kZw_i |u| w + s_cf Z_ww |w| w + s_e Z_e u|u| e - c Z_e u|u|
+//   pitch: W (BG sin(theta) + x_G cc) = m_uw (rho_i / rho) u w + s_cf M_ww |w| w + s_e M_e u|u| e - c M_e u|u|
+//
+// with dB the net buoyancy at the reference water, dB_i the known change of
+// buoyancy at segment i (in-situ density and hull law), m_uw = 0.5 rho L^3
+// M_w' + munk (X_udot - Z_wdot) the whole linear pitch moment (M_w and the
+// Munk moment are one term in w, so only their sum can be identified).
+// Each group has a prior from the profile (pseudo-observations), so the
+// posterior is a generalised least-squares solution with an exact Gaussian
+// covariance. Speeds separate gravity (constant) from lift (u^2); depths add
+// known buoyancy changes that scale the heave response; BG sets the scale of
+// the pitch moments. What the log does not constrain stays at its prior and
+// keeps its prior width in the sigmas of net buoyancy and CG x.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "analysis/auv_steady_model.h"
+#include "analysis/calibration_parameter.h"
+
+namespace auv::analysis {
+
+struct CalibrationPriors {
+  double group_rel_sigma = 0.30;  // every derivative group (--coefficient-sigma overrides)
+  // Munk moment factor: 1 = on top of M_w, 0 = inside it. A profile that does
+  // not say which gets 0.5 +- 0.5.
+  double munk_factor = 0.5, munk_sigma = 0.5;
+  double elevator_offset_sigma_deg = 2.0;
+  double bg_m = 0.02, bg_sigma_m = 0.005;
+};
+
+// One steady segment: speed, pitch rad, roll rad, elevator deg, depth rate
+// and their standard errors, with its water.
+struct CalibrationSegment {
+  std::array<double, 5> v{}, se{};
+  double density_kgm3 = 1025.0;
+  double buoyancy_change_n = 0.0;  // B_i - B_reference from density and hull law (known)
+  // A segment of an earlier mission of the same configuration (history,
+  // issue 11 item 3): its weight, and the known moment of the pieces moved
+  // since, W_now x_now = W_then x_then + moment, so moment_offset_nm = -moment.
+  // Its known mass change is inside buoyancy_change_n.
+  double weight_n = 0.0;  // 0 = the current mission's
+  double moment_offset_nm = 0.0;
+};
+
+enum CalibrationIndex { kNet = 0, kXg, kHeave, kPitchUw, kCrossflow, kPlanes, kPlaneOffset, kBg, kCalibrationCount };
+
+struct SteadyCalibration {
+  bool ok = false;
+  Eigen::VectorXd p;    // CalibrationIndex order; net in N, x_G and BG in m, c in deg
+  Eigen::MatrixXd cov;
+  double chi2_per_dof = 0.0;
+  double data_parameters = 0.0;  // effective number of parameters the data determined
+  std::vector<CalibrationParameter> parameters;  // hydrodynamic groups only
+  double elevator_offset_deg = 0.0, elevator_offset_sigma_deg = 0.0;
+};
+
+// Nominal linear pitch-moment derivative m_uw at density rho for a Munk factor.
+double pitchMomentUw(const SteadyHydroCoefficients& c, double rho, double munk_factor);
+
+SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double weight_n, double rho_ref,
+                                  const std::vector<CalibrationSegment>& segments, const CalibrationPriors& priors);
+
+// The posterior covariance after adding planned steady segments (a short
+// calibration manoeuvre) to the log: posterior information plus the planned
+// segments' Fisher information of the same model at the calibrated values.
+Eigen::MatrixXd covarianceAfter(const SteadyHydroCoefficients& c, double weight_n, double rho_ref,
+                                const SteadyCalibration& cal, const std::vector<CalibrationSegment>& planned);
+
+// Steady hydrodynamic loads with the calibrated groups (for prediction).
+SteadyHydroCoefficients calibratedCoefficients(const SteadyHydroCoefficients& c, double rho_ref,
+                                               const Eigen::VectorXd& p);
+
+}  // namespace auv::analysis

@@ -1,0 +1,206 @@
+#include "identification_harness.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+#include "missionlog/interchange_csv.h"
+
+#include "analysis/analysis_report.h"
+#include "analysis/mission_analysis.h"
+#include "common/units.h"
+#include "planning/next_mission_water.h"
+#include "planning/pre_mission_plan.h"
+#include "planning/trim_estimate.h"
+#include "sim/flown_mass.h"
+#include "sim/sim_log.h"
+#include "sim/simulator.h"
+#include "vehicle/json_reader.h"
+#include "vehicle/profile_loader.h"
+
+namespace auv::identification {
+namespace {
+
+const std::string kResources = AUV_RESOURCE_DIR;
+
+VehicleProfile nominalProfile() {
+  VehicleProfile p = loadVehicleProfile(kResources + "/vehicles/hugin1000.json");
+  const nlohmann::json doc = JsonReader::parseFile(kResources + "/sim/hugin1000_hydrodynamics.json");
+  for (const char* k : {"hydrodynamics", "actuators", "sim_assumptions"}) p.sections[k] = doc[k];
+  return p;
+}
+
+const std::vector<double> kInstalled = {7.2, 7.2, 25.2, 25.2};
+
+struct Flown {
+  MissionLog log;
+  double mass_kg = 0.0, cg_x_m = 0.0, cg_y_m = 0.0, bg_m = 0.0;
+  double min_net_kg = 0.0, mean_net_kg = 0.0;
+};
+
+Flown fly(const sim::VehicleModel& truth, const sim::DepthAutopilotConfig& ap, const sim::SurveyMission& m,
+          const std::vector<MassItem>& installed, const sim::BallastError& err, std::uint64_t noise_seed,
+          const std::vector<double>& installed_kg) {
+  sim::Scenario sc = m.scenario;
+  sc.extra_masses = installed;
+  sc.ballast_error = err;
+  sim::SimOptions opt = m.options;
+  opt.seed = noise_seed;
+  const sim::WaterColumn water = m.water();
+  const sim::SimTrace tr = sim::simulate(truth, ap, water, sc, opt);
+  Flown f;
+  f.log = sim::toMissionLog(tr, {"hugin1000", "plan", "identification harness", noise_seed, 0, installed_kg, {}});
+  sim::applyDropouts(f.log, noise_seed);
+  f.mass_kg = tr.truth.mass_kg;
+  f.cg_x_m = tr.truth.cg_x_m;
+  f.cg_y_m = tr.truth.cg_y_m;
+  f.bg_m = tr.truth.cg_z_m;
+  double s = 0.0, mn = 1e30;
+  for (double n : tr.net_buoyancy_n) s += n, mn = std::min(mn, n);
+  f.mean_net_kg = s / static_cast<double>(tr.net_buoyancy_n.size()) / units::g0;
+  f.min_net_kg = mn / units::g0;
+  return f;
+}
+
+analysis::AnalysisReport analyse(const Flown& f, const VehicleProfile& p, const std::vector<double>& installed) {
+  analysis::AnalysisOptions a;
+  a.log_name = "identification";
+  a.installed_kg = installed;
+  a.bg_m = f.bg_m;  // a roll test measures BG of the vehicle as it is
+  return analysis::analyzeMission(f.log, p, a);
+}
+
+}  // namespace
+
+Harness::Harness()
+    : profile_(nominalProfile()),
+      nominal_(sim::loadSimVehicle(loadVehicleProfile(kResources + "/vehicles/hugin1000.json"), kResources)) {}
+
+CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string& dump_prefix) const {
+  CaseResult r;
+  r.truth = sim::drawTruth(seed);
+  const sim::SurveyMission m = sim::makeSurveyMission(seed);
+  r.speeds = static_cast<int>(m.rpms.size());
+  r.depths = static_cast<int>(m.depths_m.size());
+  const sim::VehicleModel truth = sim::truthModel(nominal_.model, r.truth);
+  const std::vector<MassItem> installed = sim::installedWeights(profile_, kInstalled);
+  // The drawn net buoyancy holds at the start of the mission.
+  const sim::WaterSample w0 = m.water().at(m.scenario.initial_depth_m, 0.0);
+  const double displaced0 = w0.density_kgm3 * truth.body.hull.volumeAt(w0.temperature_degC, w0.pressure_dbar);
+  const sim::BallastError err = sim::truthBallastError(truth, installed, displaced0, r.truth);
+  const Flown f = fly(truth, nominal_.autopilot, m, installed, err, seed * 7 + 1, kInstalled);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const analysis::AnalysisReport rep = analyse(f, profile_, kInstalled);
+  r.analysis_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // Through the JSON contract, so the harness also measures code from before the calibration.
+  const nlohmann::json rj = analysis::toJson(rep);
+  if (!dump_prefix.empty()) {
+    writeInterchangeCsv(f.log, dump_prefix + ".csv");
+    std::ofstream(dump_prefix + ".json") << rj.dump(1) << "\n";
+  }
+  if (rj.contains("calibration"))
+    for (const auto& q : rj["calibration"]) {
+      analysis::CalibrationParameter c;
+      c.id = q["id"].get<std::string>();
+      c.identified = q["identified"].get<bool>();
+      if (q["value"].is_number()) c.value = q["value"].get<double>();
+      if (q["sigma"].is_number()) c.sigma = q["sigma"].get<double>();
+      r.calibration.push_back(c);
+    }
+
+  // Truth at the report's reference water: rho V(T, p) - m.
+  const double Vref = profile_.hull.volumeAt(rep.temperature_degC.mean, rep.pressure_dbar.mean);
+  const double net_truth = rep.density_kgm3.mean * Vref - f.mass_kg;
+  r.known = rep.net_buoyancy_kg.known && rep.cg_x_mm.known;
+  if (r.known) {
+    r.net_err_kg = rep.net_buoyancy_kg.value - net_truth;
+    r.net_sigma_kg = rep.net_buoyancy_kg.sigma;
+    r.x_err_mm = rep.cg_x_mm.value - units::mToMm(f.cg_x_m);
+    r.x_sigma_mm = rep.cg_x_mm.sigma;
+  }
+  r.y_known = rep.cg_y_mm.known;
+  if (r.y_known) {
+    r.y_err_mm = rep.cg_y_mm.value - units::mToMm(f.cg_y_m);
+    r.y_sigma_mm = rep.cg_y_mm.sigma;
+  }
+  for (const auto& s2 : rep.segments)
+    if (s2.used && std::isfinite(s2.prop_rpm)) {
+      bool seen = false;
+      for (double q : r.log_rpms) seen = seen || std::abs(q - s2.prop_rpm) < 5.0;
+      if (!seen) r.log_rpms.push_back(s2.prop_rpm);
+    }
+  if (!closed_loop || !r.known) return r;
+
+  // The next missions: the same survey lines at one operating depth (the
+  // middle of the surveyed depths), in the same stratified water; the
+  // operator gives that depth's water from a CTD cast.
+  sim::SurveyMission m2 = m;
+  const double op_depth = m.depths_m[m.depths_m.size() / 2];
+  for (auto& leg : m2.scenario.legs) leg.depth_m = op_depth;
+  m2.scenario.initial_depth_m = op_depth;
+  const sim::WaterSample wop = m.water().at(op_depth);
+  const PlannedWater next{wop.temperature_degC, wop.salinity_psu, op_depth, 60.0};
+  auto planFrom = [&](const nlohmann::json& report, const std::vector<double>& installed_now) {
+    PreMissionInput in;
+    in.installed_kg = installed_now;
+    in.estimate = trimEstimateFromReport(report, "identification harness");
+    in.next = nextMissionWater(next, op_depth, "operator");
+    in.next.temperature_sigma_degC = 0.1;  // a CTD cast before launch
+    in.next.salinity_sigma_psu = 0.05;
+    in.policy = PlanPolicy::Exact;
+    in.use_optional_pieces = true;
+    const PreMissionPlan plan = planPreMission(profile_, in);
+    std::vector<double> after = installed_now;
+    for (std::size_t i = 0; i < after.size(); ++i)
+      after[i] = std::round((after[i] + plan.points[i].add_kg) * 1e4) / 1e4;
+    return std::pair{plan, after};
+  };
+  const TrimSpec& s = profile_.spec;
+  const double y_point = std::abs(profile_.points.front().position_m.y() - profile_.cb_m.y());
+  // Judged as the thesis does, in flight: the band at the operating point
+  // (the planned water), never negative anywhere the mission went, pitch at
+  // steady depth, roll at cruise within 0.1 deg of what the kit reaches (the
+  // smallest lateral step, the 0.5 kg piece at a side point, moves the roll
+  // by atan(0.5 kg |y| / (m BG))).
+  auto judge = [&](const Flown& fl, const analysis::AnalysisReport& rp, CaseResult::Outcome& o) {
+    o.net_op_kg = resolvePoint(profile_.hull, next).displaced_kg - fl.mass_kg;
+    o.min_net_kg = fl.min_net_kg;
+    o.pitch_deg = rp.pitch_at_steady_depth_deg.mean;
+    o.roll_deg = rp.cruise_roll_deg.known ? rp.cruise_roll_deg.value : rp.roll_deg.mean;
+    o.roll_reach_deg = units::radToDeg(std::atan(0.5 * y_point / (fl.mass_kg * fl.bg_m)));
+    o.net_ok = o.net_op_kg >= s.net_buoyancy_min_kg && o.net_op_kg <= s.net_buoyancy_max_kg;
+    o.pitch_ok = std::abs(o.pitch_deg) <= s.pitch_tolerance_deg;
+    o.roll_ok = std::abs(o.roll_deg) <= s.roll_tolerance_deg + 0.5 * o.roll_reach_deg;
+    o.safe = o.min_net_kg >= 0.0;
+    o.spec = o.net_ok && o.pitch_ok && o.roll_ok && o.safe;
+  };
+  // One move from the survey's analysis. The same vehicle with other pieces:
+  // its own (hidden) error stays.
+  const auto [plan, after] = planFrom(rj, kInstalled);
+  r.plan_band_lo_kg = plan.band_lo_kg;
+  r.plan_band_hi_kg = plan.band_hi_kg;
+  r.plan_net_kg = plan.predicted.net_buoyancy_kg;
+  const Flown f2 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after), err, seed * 7 + 2, after);
+  // Mission 2 analysed with mission 1 as history (the known move calibrates).
+  analysis::AnalysisOptions a2;
+  a2.log_name = "identification, second mission";
+  a2.installed_kg = after;
+  a2.bg_m = f2.bg_m;
+  a2.history = {{rep.steady_segments, kInstalled}};
+  const analysis::AnalysisReport rep2 = analysis::analyzeMission(f2.log, profile_, a2);
+  r.looped = true;
+  judge(f2, rep2, r.one);
+  if (!rep2.net_buoyancy_kg.known) return r;
+  // The second move, planned from the jointly calibrated second mission.
+  const auto [plan2, after2] = planFrom(analysis::toJson(rep2), after);
+  const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2);
+  judge(f3, analyse(f3, profile_, after2), r.two);
+  r.twice = true;
+  r.net2_err_kg = rep2.net_buoyancy_kg.value - (rep2.density_kgm3.mean * profile_.hull.volumeAt(rep2.temperature_degC.mean, rep2.pressure_dbar.mean) - f2.mass_kg);
+  r.net2_sigma_kg = rep2.net_buoyancy_kg.sigma;
+  return r;
+}
+
+}  // namespace auv::identification
