@@ -46,6 +46,7 @@ struct Recorder {
 };
 
 void pressEnter(QWizard& wiz) {
+  if (!focused()) QApplication::setActiveWindow(&wiz);
   QTest::keyClick(focused() ? focused() : wiz.currentPage(), Qt::Key_Return);
   QApplication::processEvents();
 }
@@ -96,7 +97,7 @@ TEST_F(FirstLaunch, FolderIsCreatedStartPageSaysWhereFinishConfirmsTheSave) {
     EXPECT_EQ(find<QLabel>(wiz, "history_location")->text(), "History: " + history);
     // Keyboard only: Enter through start, vehicle, crane, water, result (Finish).
     for (int i = 0; i < 5; ++i) pressEnter(wiz);
-    EXPECT_EQ(wiz.result(), QDialog::Accepted);
+    EXPECT_EQ(wiz.result(), QDialog::Accepted) << "stopped on page " << wiz.currentId();
     ASSERT_EQ(rec.asked.size(), 1u);
     EXPECT_FALSE(rec.asked[0].question);
     EXPECT_EQ(rec.asked[0].text,
@@ -202,7 +203,7 @@ TEST_F(FirstLaunch, AutosaveKeepsAValueStillBeingTyped) {
   ASSERT_EQ(wiz.currentId(), OperatorWizard::kCraneWeighing);
   QFile::remove(autosaveFilePath());  // the page change wrote one
   auto* fp = find<NumberInput>(wiz, "scale_fp");
-  fp->setFocus(Qt::TabFocusReason);
+  auv::testing::clickInto(fp);
   QTest::keyClicks(focused(), "391.7");  // still in the field
   EXPECT_FALSE(QFileInfo::exists(autosaveFilePath()));
   QTest::qWait(OperatorWizard::autosaveDelayMs + 300);

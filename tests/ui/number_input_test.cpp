@@ -93,22 +93,21 @@ TEST_F(NumberTyping, NorwegianLocaleTakesCommaAndPoint) {
 TEST_F(NumberTyping, FocusedFieldWithoutSelectionTakesTyping) {
   TwoFields f(-2, 40, 2, "°C");
   f.a->setValue(10.0);
-  // Focus given by the program (as a page does for its first field): the
-  // whole value is selected, so the first key replaces it.
-  QApplication::setActiveWindow(&f.window);
-  f.a->setFocus();
-  QApplication::processEvents();
+  // A click selects the whole value: the first key replaces it.
+  auv::testing::clickInto(f.a);
   ASSERT_EQ(focused(), f.a->lineEdit());
+  EXPECT_EQ(f.a->lineEdit()->selectedText(), "10.00");
   QTest::keyClicks(focused(), "6.5");
   QTest::keyClick(focused(), Qt::Key_Tab);
   EXPECT_DOUBLE_EQ(f.a->value(), 6.5);
-  // No selection at all (cursor put at the end): the keys are appended, not dropped.
-  f.a->setFocus();
-  f.a->lineEdit()->deselect();
-  f.a->lineEdit()->end(false);
+  // Focused with no selection (End puts the cursor after the text): the
+  // keys are appended, not dropped.
+  auv::testing::clickInto(f.a);
+  QTest::keyClick(focused(), Qt::Key_End);
+  EXPECT_FALSE(f.a->lineEdit()->hasSelectedText());
   QTest::keyClicks(focused(), "5");
   QTest::keyClick(focused(), Qt::Key_Tab);
-  EXPECT_DOUBLE_EQ(f.a->value(), 6.55);
+  EXPECT_DOUBLE_EQ(f.a->value(), 6.505);  // "6.50" + "5"
 }
 
 TEST_F(NumberTyping, NotANumberOrOutOfRangeIsRedAndKeptNotReplaced) {

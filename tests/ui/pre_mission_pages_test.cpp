@@ -380,7 +380,8 @@ TEST_F(PreMissionPages, HistoryAnalysisOlderThanAMonthAsksForANewTemperature) {
   EXPECT_TRUE(find<QRadioButton>(wiz, "water_operator")->isChecked());
   EXPECT_NE(find<QLabel>(wiz, "temperature_stale")->text().indexOf("older than one month"), -1);
   auto* t = find<NumberInput>(wiz, "next_temperature");
-  EXPECT_EQ(t->text(), "enter °C");
+  EXPECT_EQ(t->text(), "");  // empty, with the hint greyed in it
+  EXPECT_EQ(t->lineEdit()->placeholderText(), "enter °C");
   EXPECT_FALSE(wiz.currentPage()->isComplete());
   EXPECT_FALSE(wiz.button(QWizard::NextButton)->isEnabled());
   shot(wiz, "50b_pre_mission_stale");

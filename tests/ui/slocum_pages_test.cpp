@@ -135,7 +135,8 @@ TEST_F(SlocumPages, GliderBranchesToTankPagesWithTheReportSession) {
   wiz.button(QWizard::FinishButton)->click();
   HistoryStore store(path("history.sqlite").toStdString());
   const auto events = store.history("49-1-1");
-  ASSERT_EQ(events.size(), 3u);
+  ASSERT_EQ(events.size(), 4u);  // weighing, water, recommendation, installed state
+  EXPECT_EQ(events[3].kind, EventKind::kInstalled);
   const auto& w = std::get<Weighing>(events[0].record);
   EXPECT_EQ(w.method, WeighingMethod::kTank);
   EXPECT_DOUBLE_EQ(w.inputs["tank"]["bow_scale_g"].get<double>(), 650.0);

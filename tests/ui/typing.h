@@ -24,6 +24,23 @@ namespace auv::testing {
 
 inline QWidget* focused() { return QApplication::focusWidget(); }
 
+// Click into `in` as a person does (the field selects all on release).
+inline void clickInto(ui::NumberInput* in) {
+  QLineEdit* e = in->lineEdit();
+  if (!in->window()->isActiveWindow()) {
+    in->window()->activateWindow();
+    if (!QTest::qWaitForWindowActive(in->window(), 200)) QApplication::setActiveWindow(in->window());
+  }
+  QTest::mouseClick(e, Qt::LeftButton, Qt::NoModifier, QPoint(e->width() - 4, e->height() / 2));
+  if (focused() != e) {
+    // Offscreen, a page change can leave no window active, and a click then
+    // gives no focus; a person's click always does.
+    QApplication::setActiveWindow(in->window());
+    e->setFocus(Qt::MouseFocusReason);
+    QTest::mouseClick(e, Qt::LeftButton, Qt::NoModifier, QPoint(e->width() - 4, e->height() / 2));
+  }
+}
+
 // Click into `in` (the cursor lands where the click is, then the field
 // selects all), type `text` key by key, checking after every key that the
 // field shows exactly what was typed so far, then Tab away.
@@ -110,27 +127,20 @@ inline QStringList duplicateMnemonics(QWizard& wiz) {
   return dup;
 }
 
-// Tab from the page's first field until the focus leaves the page: it must
-// land on Next (or Finish on the last page).
+// Where Tab goes after the page's last field: the first widget after it in
+// the window's tab chain (what QWidget::focusNextPrevChild follows) that
+// takes Tab focus. It must be Next (or Finish on the last page).
 inline QWidget* widgetAfterPageByTab(QWizard& wiz) {
   QWizardPage* page = wiz.currentPage();
-  QWidget* first = nullptr;
-  for (QWidget* w = page->nextInFocusChain(); w && w != page; w = w->nextInFocusChain()) {
-    if (page->isAncestorOf(w) && w->isVisible() && w->isEnabled() && (w->focusPolicy() & Qt::TabFocus)) {
-      first = w;
-      break;
-    }
-  }
-  if (!first) return nullptr;
-  first->setFocus(Qt::TabFocusReason);
-  QApplication::processEvents();
-  for (int i = 0; i < 200; ++i) {
-    QWidget* f = focused();
-    if (!f) return nullptr;
-    if (!page->isAncestorOf(f)) return f;
-    QTest::keyClick(f, Qt::Key_Tab);
-    QApplication::processEvents();
-  }
+  auto tabbable = [](QWidget* w) {
+    return w->isVisible() && w->isEnabled() && (w->focusPolicy() & Qt::TabFocus) && !w->focusProxy();
+  };
+  QWidget* last = nullptr;
+  for (QWidget* w = page->nextInFocusChain(); w && w != page; w = w->nextInFocusChain())
+    if (page->isAncestorOf(w) && tabbable(w)) last = w;
+  if (!last) return nullptr;
+  for (QWidget* w = last->nextInFocusChain(); w && w != last; w = w->nextInFocusChain())
+    if (tabbable(w)) return page->isAncestorOf(w) ? nullptr : w;
   return nullptr;
 }
 

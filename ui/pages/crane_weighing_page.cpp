@@ -31,7 +31,7 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
     sf->addRow(names[i], scales_[static_cast<std::size_t>(i)]);
   }
   total_ = makeNumber("total", 0, 10000, 1, " kg", tr("Reading of the scale on the crane hook (the whole vehicle)."));
-  sf->addRow(tr("&Hook (total):"), total_);
+  sf->addRow(tr("Hoo&k (total):"), total_);
   sum_check_ = new QLabel;
   sum_check_->setObjectName("sum_check");
   sf->addRow(QString(), sum_check_);
@@ -51,7 +51,8 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   for (int i = 0; i < 4; ++i) {
     installed_[static_cast<std::size_t>(i)] =
         makeNumber(QString("installed_%1").arg(i), 0, 200, 1, " kg", tr("Kit pieces already in this point, in kg."));
-    inf->addRow(names[i], installed_[static_cast<std::size_t>(i)]);
+    // The scales own the shortcut letters of these names.
+    inf->addRow(QString(names[i]).remove('&'), installed_[static_cast<std::size_t>(i)]);
   }
   error_ = new QLabel;
   error_->setObjectName("error");

@@ -57,7 +57,7 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   predicted_->setObjectName("predicted");
   predicted_->setWordWrap(true);
   QScrollArea* scroll = makeMessageArea("messages", &messages_);
-  scroll->setMinimumHeight(90);
+  scroll->setMinimumHeight(60);
   save_status_ = makeErrorLabel("save_status");
   table_ = new QTableWidget(0, 3);
   table_->setObjectName("changes");

@@ -33,7 +33,7 @@ RollTestPage::RollTestPage(WizardState& state) : state_(state) {
   setSubTitle(tr("Wings off, glider hanging free from the nose hook and tail loop. Read m_roll with nothing hung, "
                  "then with each known mass hung on a wing rail."));
 
-  after_step_ = new QCheckBox(tr("&Bottles set after the tank step"));
+  after_step_ = new QCheckBox(tr("Bottles set after the tank st&ep"));
   after_step_->setObjectName("after_step");
   after_step_->setToolTip(tr("Tick when you have changed the bottles as the tank step said: the roll test then "
                              "refers to these contents."));

@@ -97,7 +97,7 @@ StartPage::StartPage(WizardState& state) : state_(state) {
   mode_post_ = new QRadioButton(tr("&Post mission: import a mission log and look at the deviations"));
   mode_post_->setObjectName("mode_post");
   mode_post_->setToolTip(tr("You have a log of a mission flown with this configuration."));
-  mode_pre_ = new QRadioButton(tr("P&re mission: plan the next mission from the analysed log"));
+  mode_pre_ = new QRadioButton(tr("Pre &mission: plan the next mission from the analysed log"));
   mode_pre_->setObjectName("mode_pre");
   mode_pre_->setToolTip(tr("Plan the next mission from the last analysed mission of this configuration: needs an "
                            "analysis in the history (post-mission mode) or in this session."));

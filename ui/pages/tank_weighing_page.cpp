@@ -50,7 +50,7 @@ TankWeighingPage::TankWeighingPage(WizardState& state) : state_(state) {
   auto* gf = new QFormLayout(gBox);
   gf->addRow(tr("Gl&ider:"), glider_);
   gf->addRow(tr("&Dry mass:"), dry_mass_);
-  gf->addRow(tr("&Bow scale:"), bow_scale_);
+  gf->addRow(tr("Bow s&cale:"), bow_scale_);
   gf->addRow(tr("&Aft scale:"), aft_scale_);
 
   tank_water_ = new QComboBox;
@@ -71,7 +71,7 @@ TankWeighingPage::TankWeighingPage(WizardState& state) : state_(state) {
   auto* wBox = new QGroupBox(tr("Water"));
   auto* wf = new QFormLayout(wBox);
   wf->addRow(tr("Tank &water:"), tank_water_);
-  wf->addRow(tr("Tank de&nsity:"), tank_density_);
+  wf->addRow(tr("Tank d&ensity:"), tank_density_);
   wf->addRow(tr("Tank te&mperature:"), tank_temperature_);
   wf->addRow(tr("Ta&rget density:"), target_density_);
   wf->addRow(tr("Tar&get temperature:"), target_temperature_);

@@ -213,12 +213,14 @@ void OperatorWizard::initializePage(int id) {
   QWizard::initializePage(id);
   // Tab from the page's last field lands on Next (or Finish), so Enter after
   // Tab goes forward; Back, Cancel and Help follow.
-  QWizardPage* p = page(id);
+  // Fields a page builds in initializePage join the chain at its end, after
+  // the buttons: the buttons go behind the window's last other widget.
+  const QList<QWidget*> buttons = {button(QWizard::NextButton), button(QWizard::FinishButton),
+                                   button(QWizard::CancelButton), button(QWizard::BackButton),
+                                   button(QWizard::HelpButton)};
   QWidget* last = nullptr;
-  for (QWidget* w = p->nextInFocusChain(); w && w != p; w = w->nextInFocusChain()) {
-    if (!p->isAncestorOf(w)) break;
-    if (w->focusPolicy() & Qt::TabFocus) last = w;
-  }
+  for (QWidget* w = nextInFocusChain(); w && w != this; w = w->nextInFocusChain())
+    if (!buttons.contains(w) && isAncestorOf(w) && !buttons.contains(w->parentWidget())) last = w;
   QWidget* chain[] = {last, button(QWizard::NextButton), button(QWizard::FinishButton), button(QWizard::CancelButton),
                       button(QWizard::BackButton), button(QWizard::HelpButton)};
   for (std::size_t i = 1; i < std::size(chain); ++i)
@@ -236,11 +238,13 @@ bool OperatorWizard::eventFilter(QObject* watched, QEvent* event) {
 void OperatorWizard::done(int result) {
   QSettings().setValue("wizard/geometry", saveGeometry());
   autosave_timer_.stop();
-  if (result == QDialog::Accepted) {
+  // QWizard::done validates (and so saves) the last page first; the wizard
+  // closes only if that worked.
+  QWizard::done(result);
+  if (result == QDialog::Accepted && !isVisible()) {
     discardAutosave();
     if (!saved_text_.isEmpty()) ask(tr("Saved"), saved_text_, false);
   }
-  QWizard::done(result);
 }
 
 }  // namespace auv::ui
