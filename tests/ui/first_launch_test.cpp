@@ -249,6 +249,8 @@ TEST_F(FirstLaunch, KeyboardOnEveryFirstMissionPage) {
       const int id = wiz.currentId();
       const std::string where = wiz.currentPage()->title().toStdString();
       EXPECT_EQ(auv::testing::duplicateMnemonics(wiz), QStringList()) << where;
+      EXPECT_EQ(auv::testing::internalWords(wiz.currentPage()), QStringList())
+          << where << ": " << auv::testing::internalWords(wiz.currentPage()).join(" / ").toStdString();
       const bool last = wiz.nextId() == -1;
       QWidget* after = auv::testing::widgetAfterPageByTab(wiz);
       EXPECT_EQ(after, wiz.button(last ? QWizard::FinishButton : QWizard::NextButton)) << where;

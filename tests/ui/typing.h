@@ -6,6 +6,8 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QComboBox>
+#include <QTableWidget>
 #include <QGroupBox>
 #include <QLabel>
 #include <QRegularExpression>
@@ -125,6 +127,31 @@ inline QStringList duplicateMnemonics(QWizard& wiz) {
     seen.insert(c);
   }
   return dup;
+}
+
+// Words on the page a technician cannot act on: CLI flags, code paths, JSON
+// files, ids with '_' (channel or point ids). Returns the offending texts.
+inline QStringList internalWords(QWizardPage* page) {
+  QStringList texts;
+  for (QLabel* l : page->findChildren<QLabel*>())
+    if (l->isVisibleTo(page)) texts << l->text();
+  for (QAbstractButton* b : page->findChildren<QAbstractButton*>())
+    if (b->isVisibleTo(page)) texts << b->text();
+  for (QGroupBox* g : page->findChildren<QGroupBox*>())
+    if (g->isVisibleTo(page)) texts << g->title();
+  for (QComboBox* c : page->findChildren<QComboBox*>())
+    if (c->isVisibleTo(page))
+      for (int i = 0; i < c->count(); ++i) texts << c->itemText(i);
+  for (QTableWidget* t : page->findChildren<QTableWidget*>())
+    if (t->isVisibleTo(page))
+      for (int r = 0; r < t->rowCount(); ++r)
+        for (int k = 0; k < t->columnCount(); ++k)
+          if (t->item(r, k)) texts << t->item(r, k)->text();
+  static const QRegularExpression bad("(^|\\s)--[a-z]|core/|\\.json\\b|\\b[A-Za-z]+_[A-Za-z0-9]+\\b");
+  QStringList out;
+  for (const QString& t : texts)
+    if (bad.match(QString(t).remove(QRegularExpression("<[^>]*>"))).hasMatch()) out << t;
+  return out;
 }
 
 // Where Tab goes after the page's last field: the first widget after it in

@@ -7,6 +7,8 @@
 #include <QScrollArea>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <QRegularExpression>
+#include <algorithm>
 #include <cmath>
 
 #include "common/input_error.h"
@@ -152,7 +154,18 @@ void FirstMissionResultPage::showReport(const FirstMissionReport& r) {
   QStringList msgs;
   for (const auto& w : r.warnings) msgs << tr("⚠ %1").arg(QString::fromStdString(w));
   for (const auto& n : r.notes) msgs << QString::fromStdString(n);
-  messages_->setText(msgs.join("\n"));
+  // Core's advice names points by their profile ids (fore_port); the
+  // technician reads the profile's labels (the longest id first, so that
+  // "fore_port" is not half-replaced inside a longer id).
+  QString text = msgs.join("\n");
+  std::vector<const AdjustmentPoint*> pts;
+  for (const auto& p : state_.vehicle->points) pts.push_back(&p);
+  std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->name.size() > b->name.size(); });
+  for (const auto* p : pts) {
+    const QRegularExpression id("\\b" + QRegularExpression::escape(QString::fromStdString(p->name)) + "\\b");
+    text.replace(id, QString::fromStdString(p->label));
+  }
+  messages_->setText(text);
 }
 
 void FirstMissionResultPage::buildInstalledInputs(const FirstMissionReport& r) {
