@@ -27,6 +27,7 @@
 #include "planning/plan_sources.h"
 #include "pre_mission_fixture.h"
 #include "screenshot.h"
+#include "typing.h"
 #include "ui_fixture.h"
 #include "vehicle/json_reader.h"
 #include "widgets/inputs.h"
@@ -478,6 +479,39 @@ TEST_F(PreMissionPages, ResumeKeepsWaterPolicyTicksAndInstalledMasses) {
   ASSERT_EQ(again.currentId(), OperatorWizard::kAdjustment);
   EXPECT_NEAR(find<NumberInput>(again, "actual_0")->value(), installed[0], 1e-9);
   EXPECT_EQ(find<QListWidget>(again, "checklist")->item(0)->checkState(), Qt::Checked);
+}
+
+// Issue 14, items 1 and 6: every numeric field of the pre-mission and
+// adjustment pages typed key by key; the deepest depth is never above the
+// operating depth (default: the operating depth without a log), and a
+// shallower one typed is refused naming the field.
+TEST_F(PreMissionPages, TypedFieldsAndDeepestDepthNeverAboveTheOperatingDepth) {
+  OperatorWizard wiz(sessionWithAnalysis());
+  wiz.setClock(fixedNow);
+  wiz.show();
+  wiz.next();
+  wiz.next();
+  ASSERT_EQ(wiz.currentId(), OperatorWizard::kPreMission);
+  QTest::mouseClick(find<QRadioButton>(wiz, "water_operator"), Qt::LeftButton);
+  ASSERT_TRUE(find<QRadioButton>(wiz, "water_operator")->isChecked());
+  auto* depth = find<NumberInput>(wiz, "next_depth");
+  auto* deepest = find<NumberInput>(wiz, "next_deepest");
+  EXPECT_GE(deepest->value(), depth->value());
+  EXPECT_GT(deepest->value(), 0.0);
+  EXPECT_GE(auv::testing::typeIntoEveryNumberField(wiz.currentPage()), 5);
+  auv::testing::typeInto(find<NumberInput>(wiz, "next_temperature"), "6.5");
+  auv::testing::typeInto(find<NumberInput>(wiz, "next_latitude"), "59.4");
+  auv::testing::typeInto(depth, "200");
+  auv::testing::typeInto(deepest, "150");
+  wiz.next();
+  EXPECT_EQ(wiz.currentId(), OperatorWizard::kPreMission);
+  const QString err = find<QLabel>(*wiz.currentPage(), "error")->text();
+  EXPECT_NE(err.indexOf("Deepest depth"), -1) << err.toStdString();
+  auv::testing::typeInto(deepest, "374");
+  wiz.next();
+  ASSERT_EQ(wiz.currentId(), OperatorWizard::kAdjustment);
+  EXPECT_DOUBLE_EQ(wiz.state().next_deepest_m, 374.0);
+  EXPECT_GE(auv::testing::typeIntoEveryNumberField(wiz.currentPage()), 4);
 }
 
 }  // namespace auv::ui
