@@ -12,6 +12,7 @@
 #include "common/input_error.h"
 #include "history/ballasting_file.h"
 #include "history/configuration_id.h"
+#include "history/default_location.h"
 #include "history/export.h"
 #include "history/store.h"
 
@@ -20,22 +21,10 @@ namespace fs = std::filesystem;
 namespace auv::cli {
 
 std::string historyPath(const std::string& flag) {
-  if (!flag.empty()) return flag;
-  if (const char* env = std::getenv("AUVBALLAST_HISTORY"); env && *env) return env;
-  fs::path dir;
-  if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg) {
-    dir = xdg;
-  } else if (const char* home = std::getenv("HOME"); home && *home) {
-    dir = fs::path(home) / ".local" / "share";
-  } else {
-    throw InputError("history", "no location for the history database (HOME and XDG_DATA_HOME are unset)",
-                     "give --history FILE or set AUVBALLAST_HISTORY");
-  }
-  dir /= "auvballast";
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError("history", "cannot create '" + dir.string() + "': " + ec.message(), "give --history FILE");
-  return (dir / "history.sqlite").string();
+  // The same rule as the wizard (history/default_location.h).
+  const std::string path = flag.empty() ? defaultHistoryPath() : flag;
+  if (flag.empty()) ensureHistoryFolder(path);
+  return path;
 }
 
 namespace {

@@ -58,7 +58,7 @@
     </message>
     <message>
         <location filename="../../ui/pages/crane_weighing_page.cpp" line="49" />
-        <source>&amp;Hook (total):</source>
+        <source>Hoo&amp;k (total):</source>
         <translation>&amp;Krok (total):</translation>
     </message>
     <message>
@@ -885,7 +885,7 @@
     </message>
     <message>
         <location filename="../../ui/pages/roll_test_page.cpp" line="44" />
-        <source>&amp;Bottles set after the tank step</source>
+        <source>Bottles set after the tank st&amp;ep</source>
         <translation>&amp;Flasker satt etter tanktrinnet</translation>
     </message>
     <message>
@@ -1201,7 +1201,7 @@
     </message>
     <message>
         <location filename="../../ui/pages/start_page.cpp" line="98" />
-        <source>P&amp;re mission: plan the next mission from the analysed log</source>
+        <source>Pre &amp;mission: plan the next mission from the analysed log</source>
         <translation>Før &amp;neste oppdrag: planlegg neste oppdrag fra den analyserte loggen</translation>
     </message>
     <message>
@@ -1396,7 +1396,7 @@
     </message>
     <message>
         <location filename="../../ui/pages/tank_weighing_page.cpp" line="61" />
-        <source>&amp;Bow scale:</source>
+        <source>Bow s&amp;cale:</source>
         <translation>&amp;Baugvekt:</translation>
     </message>
     <message>
@@ -1463,7 +1463,7 @@
     </message>
     <message>
         <location filename="../../ui/pages/tank_weighing_page.cpp" line="82" />
-        <source>Tank de&amp;nsity:</source>
+        <source>Tank d&amp;ensity:</source>
         <translation>Tank&amp;tetthet:</translation>
     </message>
     <message>

@@ -3,7 +3,7 @@
 // (thesis eq. 4.1: x_G = sum m_i x_i / sum m_i over the four part scales).
 #include <gtest/gtest.h>
 
-#include <QDoubleSpinBox>
+#include "widgets/number_input.h"
 
 #include "screenshot.h"
 #include "ui_fixture.h"
@@ -41,7 +41,7 @@ TEST_F(CraneSideViewTest, ShowsWhereEachScaleHangsWhatItReadsAndTheCg) {
   const double cg_before = *d.cg_x_m;
 
   // Typing follows at once: the fore rope 10 cm further aft moves the CG aft.
-  auto* fore = find<QDoubleSpinBox>(wiz, "rope_fore");
+  auto* fore = find<NumberInput>(wiz, "rope_fore");
   fore->setValue(fore->value() - 0.1);
   EXPECT_DOUBLE_EQ(view->data().rope_fore_x_m, fore->value());
   EXPECT_NEAR(*view->data().cg_x_m, cgOracle(view->data()), 1e-9);

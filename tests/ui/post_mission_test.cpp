@@ -7,7 +7,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
+#include "widgets/number_input.h"
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
@@ -140,12 +140,12 @@ TEST_F(PostMission, HuginSurveyAnalysisShadingCrosshairAndExport) {
   // Installed during the mission: pre-filled with what the start page took
   // from the history (the demo configuration as weighed)...
   EXPECT_TRUE(find<QGroupBox>(*wiz, "installed_box")->isVisible());
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(*wiz, "installed_fore_starboard")->value(), 14.4);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(*wiz, "installed_aft_port")->value(), 19.2);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(*wiz, "installed_fore_starboard")->value(), 14.4);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(*wiz, "installed_aft_port")->value(), 19.2);
   // ...and corrected to what this mission flew with (the plan's 7.2, 7.2, 25.2, 25.2 kg).
   const std::vector<double> installed{7.2, 7.2, 25.2, 25.2};
   const char* names[4] = {"installed_fore_starboard", "installed_fore_port", "installed_aft_starboard", "installed_aft_port"};
-  for (std::size_t i = 0; i < 4; ++i) find<QDoubleSpinBox>(*wiz, names[i])->setValue(installed[i]);
+  for (std::size_t i = 0; i < 4; ++i) find<NumberInput>(*wiz, names[i])->setValue(installed[i]);
   shot(*wiz, "20d_log_import_installed");
   wiz->next();
   ASSERT_EQ(wiz->currentId(), OperatorWizard::kDeviationPlots);
@@ -478,7 +478,7 @@ TEST_F(PostMission, ColumnMappingDialogReadsAVendorLogAndIsSavedForTheVehicle) {
   ASSERT_TRUE(dlg->choose("time", "Tid"));
   auto* fmt = find<QComboBox>(*dlg, "time_format");
   fmt->setCurrentIndex(fmt->findData(static_cast<int>(TimeFormat::kDayMonthYear)));
-  find<QDoubleSpinBox>(*dlg, "utc_offset")->setValue(2.0);  // the logger runs on CEST
+  find<NumberInput>(*dlg, "utc_offset")->setValue(2.0);  // the logger runs on CEST
   ASSERT_TRUE(dlg->choose("depth", "Dybde (m)"));
   dlg->unitEdit("depth")->setText("m");
   ASSERT_TRUE(dlg->choose("depth_cmd", "Ønsket dybde"));

@@ -7,7 +7,7 @@
 
 #include <QAbstractButton>
 #include <QCheckBox>
-#include <QDoubleSpinBox>
+#include "widgets/number_input.h"
 #include <QFile>
 #include <QLabel>
 #include <QListWidget>
@@ -27,6 +27,7 @@
 #include "planning/plan_sources.h"
 #include "pre_mission_fixture.h"
 #include "screenshot.h"
+#include "typing.h"
 #include "ui_fixture.h"
 #include "vehicle/json_reader.h"
 #include "widgets/inputs.h"
@@ -98,11 +99,11 @@ class PreMissionPages : public auv::testing::UiTest {
     wiz.next();
     ASSERT_EQ(wiz.currentId(), OperatorWizard::kPreMission);
     find<QRadioButton>(wiz, "water_operator")->setChecked(true);
-    find<QDoubleSpinBox>(wiz, "next_temperature")->setValue(nextWater().temperature_degC);
-    find<QDoubleSpinBox>(wiz, "next_salinity")->setValue(nextWater().salinity_psu);
-    find<QDoubleSpinBox>(wiz, "next_depth")->setValue(nextWater().depth_m);
-    find<QDoubleSpinBox>(wiz, "next_latitude")->setValue(nextWater().latitude_deg);
-    find<QDoubleSpinBox>(wiz, "next_deepest")->setValue(kDeepest);
+    find<NumberInput>(wiz, "next_temperature")->setValue(nextWater().temperature_degC);
+    find<NumberInput>(wiz, "next_salinity")->setValue(nextWater().salinity_psu);
+    find<NumberInput>(wiz, "next_depth")->setValue(nextWater().depth_m);
+    find<NumberInput>(wiz, "next_latitude")->setValue(nextWater().latitude_deg);
+    find<NumberInput>(wiz, "next_deepest")->setValue(kDeepest);
   }
 };
 
@@ -129,19 +130,19 @@ TEST_F(PreMissionPages, PlanFromTheSessionsAnalysisAdjustAndSave) {
   EXPECT_NE(find<QLabel>(wiz, "installed_now")->text().indexOf("Aft / port 25.2 kg"), -1);
   // Last mission's CTD prefilled: the analysis's water at its operating depth.
   EXPECT_TRUE(find<QRadioButton>(wiz, "water_ctd")->isChecked());
-  EXPECT_NEAR(find<QDoubleSpinBox>(wiz, "next_temperature")->value(), a.temperature_degC.mean, 0.006);
-  EXPECT_NEAR(find<QDoubleSpinBox>(wiz, "next_depth")->value(), a.depth_m.mean, 0.06);
-  EXPECT_FALSE(find<QDoubleSpinBox>(wiz, "next_temperature")->isEnabled());
+  EXPECT_NEAR(find<NumberInput>(wiz, "next_temperature")->value(), a.temperature_degC.mean, 0.006);
+  EXPECT_NEAR(find<NumberInput>(wiz, "next_depth")->value(), a.depth_m.mean, 0.06);
+  EXPECT_FALSE(find<NumberInput>(wiz, "next_temperature")->isEnabled());
   EXPECT_TRUE(find<QCheckBox>(wiz, "optional_pieces")->isVisible());  // HUGIN has the 0.5 kg piece
   EXPECT_TRUE(find<QLabel>(wiz, "temperature_stale")->text().isEmpty());
 
   find<QRadioButton>(wiz, "water_operator")->setChecked(true);
-  EXPECT_TRUE(find<QDoubleSpinBox>(wiz, "next_temperature")->isEnabled());
-  find<QDoubleSpinBox>(wiz, "next_temperature")->setValue(nextWater().temperature_degC);
-  find<QDoubleSpinBox>(wiz, "next_salinity")->setValue(nextWater().salinity_psu);
-  find<QDoubleSpinBox>(wiz, "next_depth")->setValue(nextWater().depth_m);
-  find<QDoubleSpinBox>(wiz, "next_latitude")->setValue(nextWater().latitude_deg);
-  find<QDoubleSpinBox>(wiz, "next_deepest")->setValue(kDeepest);
+  EXPECT_TRUE(find<NumberInput>(wiz, "next_temperature")->isEnabled());
+  find<NumberInput>(wiz, "next_temperature")->setValue(nextWater().temperature_degC);
+  find<NumberInput>(wiz, "next_salinity")->setValue(nextWater().salinity_psu);
+  find<NumberInput>(wiz, "next_depth")->setValue(nextWater().depth_m);
+  find<NumberInput>(wiz, "next_latitude")->setValue(nextWater().latitude_deg);
+  find<NumberInput>(wiz, "next_deepest")->setValue(kDeepest);
   shot(wiz, "50_pre_mission");
   const PreMissionPlan oracle = oraclePlan(*wiz.state().vehicle);
   // The preview shows the same prediction.
@@ -201,9 +202,9 @@ TEST_F(PreMissionPages, PlanFromTheSessionsAnalysisAdjustAndSave) {
 
   // Actually installed: defaults to the plan; one more 1.2 kg piece aft/starboard.
   const std::vector<double> planned = installedAfterPlan(exampleInstalledKg(), oracle);
-  auto* as = find<QDoubleSpinBox>(wiz, "actual_2");
+  auto* as = find<NumberInput>(wiz, "actual_2");
   for (std::size_t i = 0; i < 4; ++i) {
-    EXPECT_NEAR(find<QDoubleSpinBox>(wiz, QString("actual_%1").arg(i).toLatin1().constData())->value(), planned[i], 1e-9);
+    EXPECT_NEAR(find<NumberInput>(wiz, QString("actual_%1").arg(i).toLatin1().constData())->value(), planned[i], 1e-9);
   }
   EXPECT_EQ(find<QLabel>(wiz, "actual_prediction")->text(), "As planned: the prediction above holds.");
   as->setValue(planned[2] + 1.2);
@@ -379,8 +380,9 @@ TEST_F(PreMissionPages, HistoryAnalysisOlderThanAMonthAsksForANewTemperature) {
   EXPECT_FALSE(find<QRadioButton>(wiz, "water_ctd")->isEnabled());
   EXPECT_TRUE(find<QRadioButton>(wiz, "water_operator")->isChecked());
   EXPECT_NE(find<QLabel>(wiz, "temperature_stale")->text().indexOf("older than one month"), -1);
-  auto* t = find<QDoubleSpinBox>(wiz, "next_temperature");
-  EXPECT_EQ(t->text(), "enter °C");
+  auto* t = find<NumberInput>(wiz, "next_temperature");
+  EXPECT_EQ(t->text(), "");  // empty, with the hint greyed in it
+  EXPECT_EQ(t->lineEdit()->placeholderText(), "enter °C");
   EXPECT_FALSE(wiz.currentPage()->isComplete());
   EXPECT_FALSE(wiz.button(QWizard::NextButton)->isEnabled());
   shot(wiz, "50b_pre_mission_stale");
@@ -414,12 +416,12 @@ TEST_F(PreMissionPages, KeyboardOnlyThroughTheSequence) {
   QTest::keyClick(focus(), Qt::Key_Space);
   EXPECT_TRUE(find<QRadioButton>(wiz, "water_operator")->isChecked());
   QTest::keyClick(focus(), Qt::Key_T, Qt::AltModifier);
-  auto* t = find<QDoubleSpinBox>(wiz, "next_temperature");
-  ASSERT_EQ(QApplication::focusWidget(), t);
-  t->selectAll();
-  QTest::keyClicks(t, "6.5");
-  EXPECT_EQ(t->text(), "6.5 °C");
-  QTest::keyClick(t, Qt::Key_Return);
+  auto* t = find<NumberInput>(wiz, "next_temperature");
+  ASSERT_EQ(QApplication::focusWidget(), t->lineEdit());
+  // The field selected its text on focus-in: typing replaces it.
+  QTest::keyClicks(focus(), "6.5");
+  EXPECT_EQ(t->text(), "6.5");
+  QTest::keyClick(focus(), Qt::Key_Return);
   ASSERT_EQ(wiz.currentId(), OperatorWizard::kAdjustment);
   EXPECT_EQ(wiz.state().policy, PlanPolicy::HalfWay);
   EXPECT_DOUBLE_EQ(wiz.state().next_water->temperature_degC, 6.5);
@@ -456,7 +458,7 @@ TEST_F(PreMissionPages, ResumeKeepsWaterPolicyTicksAndInstalledMasses) {
   auto* list = find<QListWidget>(wiz, "checklist");
   ASSERT_GT(list->count(), 0);
   list->item(0)->setCheckState(Qt::Checked);
-  auto* a0 = find<QDoubleSpinBox>(wiz, "actual_0");
+  auto* a0 = find<NumberInput>(wiz, "actual_0");
   a0->setValue(a0->value() + 2.4);
   const std::vector<double> installed = wiz.state().actually_installed_kg;
   const nlohmann::json j = sessionToJson(wiz.state(), wiz.currentId(), "2026-05-20T12:00:00Z");
@@ -475,8 +477,41 @@ TEST_F(PreMissionPages, ResumeKeepsWaterPolicyTicksAndInstalledMasses) {
   again.show();
   ASSERT_TRUE(again.resume(saved));
   ASSERT_EQ(again.currentId(), OperatorWizard::kAdjustment);
-  EXPECT_NEAR(find<QDoubleSpinBox>(again, "actual_0")->value(), installed[0], 1e-9);
+  EXPECT_NEAR(find<NumberInput>(again, "actual_0")->value(), installed[0], 1e-9);
   EXPECT_EQ(find<QListWidget>(again, "checklist")->item(0)->checkState(), Qt::Checked);
+}
+
+// Issue 14, items 1 and 6: every numeric field of the pre-mission and
+// adjustment pages typed key by key; the deepest depth is never above the
+// operating depth (default: the operating depth without a log), and a
+// shallower one typed is refused naming the field.
+TEST_F(PreMissionPages, TypedFieldsAndDeepestDepthNeverAboveTheOperatingDepth) {
+  OperatorWizard wiz(sessionWithAnalysis());
+  wiz.setClock(fixedNow);
+  wiz.show();
+  wiz.next();
+  wiz.next();
+  ASSERT_EQ(wiz.currentId(), OperatorWizard::kPreMission);
+  QTest::mouseClick(find<QRadioButton>(wiz, "water_operator"), Qt::LeftButton);
+  ASSERT_TRUE(find<QRadioButton>(wiz, "water_operator")->isChecked());
+  auto* depth = find<NumberInput>(wiz, "next_depth");
+  auto* deepest = find<NumberInput>(wiz, "next_deepest");
+  EXPECT_GE(deepest->value(), depth->value());
+  EXPECT_GT(deepest->value(), 0.0);
+  EXPECT_GE(auv::testing::typeIntoEveryNumberField(wiz.currentPage()), 5);
+  auv::testing::typeInto(find<NumberInput>(wiz, "next_temperature"), "6.5");
+  auv::testing::typeInto(find<NumberInput>(wiz, "next_latitude"), "59.4");
+  auv::testing::typeInto(depth, "200");
+  auv::testing::typeInto(deepest, "150");
+  wiz.next();
+  EXPECT_EQ(wiz.currentId(), OperatorWizard::kPreMission);
+  const QString err = find<QLabel>(*wiz.currentPage(), "error")->text();
+  EXPECT_NE(err.indexOf("Deepest depth"), -1) << err.toStdString();
+  auv::testing::typeInto(deepest, "374");
+  wiz.next();
+  ASSERT_EQ(wiz.currentId(), OperatorWizard::kAdjustment);
+  EXPECT_DOUBLE_EQ(wiz.state().next_deepest_m, 374.0);
+  EXPECT_GE(auv::testing::typeIntoEveryNumberField(wiz.currentPage()), 4);
 }
 
 }  // namespace auv::ui

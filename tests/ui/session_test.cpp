@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QAbstractButton>
-#include <QDoubleSpinBox>
+#include "widgets/number_input.h"
 #include <QFile>
 #include <QFrame>
 #include <QLabel>
@@ -36,11 +36,11 @@ TEST_F(Session, AutosaveOnEveryPageAndResumeWhereItStopped) {
     wiz.next();
     wiz.next();
     ASSERT_EQ(wiz.currentId(), OperatorWizard::kCraneWeighing);
-    find<QDoubleSpinBox>(wiz, "scale_fs")->setValue(392.8);
-    find<QDoubleSpinBox>(wiz, "total")->setValue(1565.7);
+    find<NumberInput>(wiz, "scale_fs")->setValue(392.8);
+    find<NumberInput>(wiz, "total")->setValue(1565.7);
     wiz.next();
     ASSERT_EQ(wiz.currentId(), OperatorWizard::kWater);
-    find<QDoubleSpinBox>(wiz, "temperature")->setValue(7.25);
+    find<NumberInput>(wiz, "temperature")->setValue(7.25);
     // The laptop dies here: no Finish, no Cancel.
   }
   ASSERT_TRUE(QFile::exists(file));
@@ -63,12 +63,12 @@ TEST_F(Session, AutosaveOnEveryPageAndResumeWhereItStopped) {
   find<QPushButton>(wiz, "resume")->click();
   ASSERT_EQ(wiz.currentId(), OperatorWizard::kWater);
   wiz.back();
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "scale_fs")->value(), 392.8);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "total")->value(), 1565.7);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "scale_fs")->value(), 392.8);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "total")->value(), 1565.7);
   wiz.next();
   // The temperature typed on the page it stopped on was not yet stored (the
   // autosave runs on page changes): the page shows the last stored value.
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "temperature")->value(), 6.5);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "temperature")->value(), 6.5);
   wiz.next();
   wiz.button(QWizard::FinishButton)->click();
   EXPECT_EQ(wiz.result(), QDialog::Accepted);

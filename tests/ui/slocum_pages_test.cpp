@@ -5,7 +5,7 @@
 #include <QAbstractButton>
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
+#include "widgets/number_input.h"
 #include <QLabel>
 #include <QPushButton>
 #include <QTableWidget>
@@ -44,17 +44,17 @@ TEST_F(SlocumPages, GliderBranchesToTankPagesWithTheReportSession) {
   wiz.show();
   wiz.next();
   ASSERT_EQ(wiz.currentId(), OperatorWizard::kVehicle);
-  EXPECT_EQ(find<QComboBox>(wiz, "vehicle")->currentText(), "slocum_g2");
+  EXPECT_EQ(find<QComboBox>(wiz, "vehicle")->currentData().toString(), "slocum_g2");
   EXPECT_NE(find<QLabel>(wiz, "summary")->text().indexOf("tank method"), -1);
   wiz.next();
   ASSERT_EQ(wiz.currentId(), OperatorWizard::kTankWeighing);  // kind "glider" -> tank, not crane
   shot(wiz, "10_tank_weighing");
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "dry_mass")->value(), 52.2);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "bow_scale")->value(), 650);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "aft_scale")->value(), 520);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "dry_mass")->value(), 52.2);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "bow_scale")->value(), 650);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "aft_scale")->value(), 520);
   EXPECT_EQ(find<QComboBox>(wiz, "tank_water")->currentIndex(), 0);  // fresh
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "tank_density")->value(), 1000.0);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "ballast_fore_port")->value(), 208);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "tank_density")->value(), 1000.0);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "ballast_fore_port")->value(), 208);
   const QString result = find<QLabel>(wiz, "tank_result")->text();
   EXPECT_NE(result.indexOf("51.030 kg"), -1) << result.toStdString();  // 52.2 - 0.65 - 0.52
   EXPECT_NE(result.indexOf(QString::number(neutralMassOracle(), 'f', 3) + " kg"), -1) << result.toStdString();
@@ -64,14 +64,14 @@ TEST_F(SlocumPages, GliderBranchesToTankPagesWithTheReportSession) {
   // the volume V = 51.03 kg / rho_tank.
   auto* water = find<QComboBox>(wiz, "tank_water");
   water->setCurrentIndex(1);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "tank_density")->value(), 1025.0);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "tank_density")->value(), 1025.0);
   const double salt_neutral = 51.03 / 1025.0 * (1.0 + 7e-5 * (3.5 - 18.5)) * 1026.0;
   EXPECT_NE(find<QLabel>(wiz, "tank_result")->text().indexOf(QString::number(salt_neutral, 'f', 3)), -1);
   water->setCurrentIndex(0);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "tank_density")->value(), 1000.0);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "tank_density")->value(), 1000.0);
 
   // An implausible reading is named next to the fields and blocks Next.
-  auto* dry = find<QDoubleSpinBox>(wiz, "dry_mass");
+  auto* dry = find<NumberInput>(wiz, "dry_mass");
   dry->setValue(1.0);  // less than the scales' apparent weight allows
   EXPECT_FALSE(find<QLabel>(*wiz.currentPage(), "error")->text().isEmpty());
   EXPECT_FALSE(wiz.currentPage()->isComplete());
@@ -85,9 +85,9 @@ TEST_F(SlocumPages, GliderBranchesToTankPagesWithTheReportSession) {
   ASSERT_NE(page, nullptr);
   EXPECT_EQ(page->rowCount(), 3);
   EXPECT_TRUE(find<QCheckBox>(wiz, "after_step")->isChecked());
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "after_aft_upper")->value(), 288);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "initial_roll")->value(), 0.09);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "roll_reading_2")->value(), -0.16);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "after_aft_upper")->value(), 288);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "initial_roll")->value(), 0.09);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "roll_reading_2")->value(), -0.16);
   // The report's printed h-arm for this session (App. B): 5.45 mm.
   const QString roll = find<QLabel>(wiz, "roll_result")->text();
   EXPECT_NE(roll.indexOf("5.45 mm"), -1) << roll.toStdString();
@@ -135,7 +135,8 @@ TEST_F(SlocumPages, GliderBranchesToTankPagesWithTheReportSession) {
   wiz.button(QWizard::FinishButton)->click();
   HistoryStore store(path("history.sqlite").toStdString());
   const auto events = store.history("49-1-1");
-  ASSERT_EQ(events.size(), 3u);
+  ASSERT_EQ(events.size(), 4u);  // weighing, water, recommendation, installed state
+  EXPECT_EQ(events[3].kind, EventKind::kInstalled);
   const auto& w = std::get<Weighing>(events[0].record);
   EXPECT_EQ(w.method, WeighingMethod::kTank);
   EXPECT_DOUBLE_EQ(w.inputs["tank"]["bow_scale_g"].get<double>(), 650.0);
@@ -150,8 +151,8 @@ TEST_F(SlocumPages, BackAndForthKeepsTheRollTable) {
   wiz.next();
   ASSERT_EQ(wiz.currentId(), OperatorWizard::kRollTest);
   find<QPushButton>(wiz, "add_row")->click();
-  find<QDoubleSpinBox>(wiz, "roll_mass_3")->setValue(0.8);
-  find<QDoubleSpinBox>(wiz, "roll_reading_3")->setValue(-0.19);
+  find<NumberInput>(wiz, "roll_mass_3")->setValue(0.8);
+  find<NumberInput>(wiz, "roll_reading_3")->setValue(-0.19);
   wiz.next();
   wiz.back();
   wiz.back();
@@ -159,8 +160,8 @@ TEST_F(SlocumPages, BackAndForthKeepsTheRollTable) {
   wiz.next();
   auto* page = qobject_cast<RollTestPage*>(wiz.currentPage());
   ASSERT_EQ(page->rowCount(), 4);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "roll_mass_3")->value(), 0.8);
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "roll_reading_3")->value(), -0.19);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "roll_mass_3")->value(), 0.8);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "roll_reading_3")->value(), -0.19);
 }
 
 TEST_F(SlocumPages, KeyboardOnlyCompletesTheTankSequence) {

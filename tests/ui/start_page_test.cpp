@@ -144,7 +144,7 @@ TEST_F(StartPageTest, PickedConfigurationFixesIdentityAndCarriesInstalledPieces)
   EXPECT_EQ(find<QLineEdit>(wiz, "configuration")->text(), "01-02-03");
   EXPECT_TRUE(find<QLineEdit>(wiz, "configuration")->isReadOnly());
   EXPECT_FALSE(find<QComboBox>(wiz, "vehicle")->isEnabled());
-  EXPECT_EQ(find<QComboBox>(wiz, "vehicle")->currentText(), "hugin1000");
+  EXPECT_EQ(find<QComboBox>(wiz, "vehicle")->currentData().toString(), "hugin1000");
   const auto& s = wiz.state();
   ASSERT_EQ(s.crane.installed_kg.size(), 4u);
   EXPECT_DOUBLE_EQ(s.crane.installed_kg[0], 14.4);
@@ -159,7 +159,7 @@ TEST_F(StartPageTest, PickedConfigurationFixesIdentityAndCarriesInstalledPieces)
   wiz.back();
   table->selectRow(rowOf(table, "02-01-01"));
   wiz.next();
-  EXPECT_EQ(find<QComboBox>(wiz, "vehicle")->currentText(), "slocum_g2");
+  EXPECT_EQ(find<QComboBox>(wiz, "vehicle")->currentData().toString(), "slocum_g2");
   EXPECT_DOUBLE_EQ(wiz.state().crane.water.temperature_degC, 3.5);
 }
 

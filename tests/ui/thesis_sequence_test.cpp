@@ -7,7 +7,7 @@
 
 #include <QAbstractButton>
 #include <QApplication>
-#include <QDoubleSpinBox>
+#include "widgets/number_input.h"
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QListWidget>
@@ -100,9 +100,9 @@ TEST_F(ThesisSequence, FirstThenPostThenPreMissionOnTheBundledData) {
     wiz.next();
     ASSERT_EQ(wiz.currentId(), OperatorWizard::kPreMission);
     find<QRadioButton>(wiz, "water_operator")->setChecked(true);
-    find<QDoubleSpinBox>(wiz, "next_temperature")->setValue(7.0);
-    find<QDoubleSpinBox>(wiz, "next_salinity")->setValue(34.5);
-    find<QDoubleSpinBox>(wiz, "next_depth")->setValue(60.0);
+    find<NumberInput>(wiz, "next_temperature")->setValue(7.0);
+    find<NumberInput>(wiz, "next_salinity")->setValue(34.5);
+    find<NumberInput>(wiz, "next_depth")->setValue(60.0);
     wiz.next();
     ASSERT_EQ(wiz.currentId(), OperatorWizard::kAdjustment);
     ASSERT_TRUE(wiz.state().plan.has_value());
@@ -117,7 +117,7 @@ TEST_F(ThesisSequence, FirstThenPostThenPreMissionOnTheBundledData) {
     auto* list = find<QListWidget>(wiz, "checklist");
     for (int i = 0; i < list->count(); ++i) list->item(i)->setCheckState(Qt::Checked);
     installed_after[3] += 1.2;  // one 1.2 kg piece more than planned at aft / port
-    find<QDoubleSpinBox>(wiz, "actual_3")->setValue(installed_after[3]);
+    find<NumberInput>(wiz, "actual_3")->setValue(installed_after[3]);
     EXPECT_EQ(wiz.state().actually_installed_kg, installed_after);
     wiz.next();
     ASSERT_EQ(wiz.currentId(), OperatorWizard::kSummary);

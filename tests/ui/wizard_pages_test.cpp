@@ -4,7 +4,7 @@
 
 #include <QAbstractButton>
 #include <QComboBox>
-#include <QDoubleSpinBox>
+#include "widgets/number_input.h"
 #include <QFontInfo>
 #include <QFontMetrics>
 #include <QLabel>
@@ -53,7 +53,7 @@ TEST_F(WizardPages, DemoWalksStartVehicleWeighingWaterResultAndSaves) {
   wiz.next();
   ASSERT_EQ(wiz.currentId(), OperatorWizard::kVehicle);
   shot(wiz, "02_vehicle");
-  EXPECT_EQ(find<QComboBox>(wiz, "vehicle")->currentText(), "hugin1000");
+  EXPECT_EQ(find<QComboBox>(wiz, "vehicle")->currentData().toString(), "hugin1000");
   EXPECT_EQ(find<QLineEdit>(wiz, "configuration")->text(), "01-02-03");
   EXPECT_NE(find<QLabel>(wiz, "summary")->text().indexOf("1498.0 kg"), -1);
   EXPECT_NE(find<QLabel>(wiz, "summary")->text().indexOf("crane scales"), -1);
@@ -61,7 +61,7 @@ TEST_F(WizardPages, DemoWalksStartVehicleWeighingWaterResultAndSaves) {
   wiz.next();
   ASSERT_EQ(wiz.currentId(), OperatorWizard::kCraneWeighing);
   shot(wiz, "03_crane_weighing");
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "scale_fs")->value(), 392.3);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "scale_fs")->value(), 392.3);
   // 392.3 + 391.3 + 391.3 + 390.3 = 1565.2 = the hook reading.
   EXPECT_NE(find<QLabel>(wiz, "sum_check")->text().indexOf("1565.2 kg (0.0 kg"), -1);
   EXPECT_TRUE(wiz.currentPage()->isComplete());
@@ -114,10 +114,11 @@ TEST_F(WizardPages, DemoWalksStartVehicleWeighingWaterResultAndSaves) {
   EXPECT_EQ(c->vehicle_key, "hugin1000");
   EXPECT_EQ(c->area, "Horten");
   const auto events = store.history("01-02-03");
-  ASSERT_EQ(events.size(), 3u);
+  ASSERT_EQ(events.size(), 4u);
   EXPECT_EQ(events[0].kind, EventKind::kWeighing);
   EXPECT_EQ(events[1].kind, EventKind::kWater);
   EXPECT_EQ(events[2].kind, EventKind::kRecommendation);
+  EXPECT_EQ(events[3].kind, EventKind::kInstalled);
   const auto& w = std::get<Weighing>(events[0].record);
   EXPECT_DOUBLE_EQ(w.inputs["total_kg"].get<double>(), 1565.2);
   EXPECT_DOUBLE_EQ(w.results["weight_kg"].get<double>(), 1565.2);
@@ -133,7 +134,7 @@ TEST_F(WizardPages, WeighingSumMismatchBlocksNext) {
   wiz.next();
   wiz.next();
   ASSERT_EQ(wiz.currentId(), OperatorWizard::kCraneWeighing);
-  auto* fs = find<QDoubleSpinBox>(wiz, "scale_fs");
+  auto* fs = find<NumberInput>(wiz, "scale_fs");
   fs->setValue(fs->value() + 100);  // a mistyped reading
   EXPECT_FALSE(wiz.currentPage()->isComplete());
   EXPECT_FALSE(wiz.button(QWizard::NextButton)->isEnabled());
@@ -142,7 +143,7 @@ TEST_F(WizardPages, WeighingSumMismatchBlocksNext) {
   // Going back and forth keeps what was typed.
   wiz.back();
   wiz.next();
-  EXPECT_DOUBLE_EQ(find<QDoubleSpinBox>(wiz, "scale_fs")->value(), 392.3 + 100);
+  EXPECT_DOUBLE_EQ(find<NumberInput>(wiz, "scale_fs")->value(), 392.3 + 100);
 }
 
 TEST_F(WizardPages, KeyboardOnlyReachesTheResultAndFinishes) {
@@ -170,13 +171,14 @@ TEST_F(WizardPages, EveryInputHasATooltipAndRoomForGloves) {
   OperatorWizard wiz(makeSlocumDemoState(AUV_RESOURCE_DIR));
   for (int id : wiz.pageIds()) {
     QWizardPage* page = wiz.page(id);
-    for (auto* s : page->findChildren<QAbstractSpinBox*>()) {
+    EXPECT_TRUE(page->findChildren<QAbstractSpinBox*>().isEmpty()) << "page " << id << ": numbers use NumberInput";
+    for (auto* s : page->findChildren<NumberInput*>()) {
       EXPECT_FALSE(s->toolTip().isEmpty()) << "page " << id << ": " << s->objectName().toStdString();
       EXPECT_GE(s->minimumHeight(), 32) << s->objectName().toStdString();
       EXPECT_FALSE(s->objectName().isEmpty()) << "page " << id;
     }
     for (auto* e : page->findChildren<QLineEdit*>()) {
-      if (qobject_cast<QAbstractSpinBox*>(e->parent())) continue;  // a spin box's own editor
+      if (qobject_cast<NumberInput*>(e->parent())) continue;  // a number field's own editor
       EXPECT_FALSE(e->toolTip().isEmpty()) << e->objectName().toStdString();
       EXPECT_GE(e->minimumHeight(), 32) << e->objectName().toStdString();
     }

@@ -1,7 +1,6 @@
 #include "pages/adjustment_page.h"
 
 #include <QAction>
-#include <QDoubleSpinBox>
 #include <QEvent>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -184,14 +183,13 @@ void AdjustmentPage::initializePage() {
   const double step = plan.piece_sizes_kg.empty() ? 0.1 : plan.piece_sizes_kg.front();
   for (std::size_t i = 0; i < v.points.size(); ++i) {
     const AdjustmentPoint& ap = v.points[i];
-    auto* spin = makeSpin(QString("actual_%1").arg(i), 0, ap.capacity_kg > 0 ? ap.capacity_kg : 1000.0, decimals, " kg",
+    auto* spin = makeNumber(QString("actual_%1").arg(i), 0, ap.capacity_kg > 0 ? ap.capacity_kg : 1000.0, decimals, " kg",
                           tr("Kit pieces now in '%1' after the work, in kg. Planned: %2. Arrows step by one %3 piece; "
                              "Ctrl+Z undoes.")
                               .arg(q(ap.label), massText(plan_after[i], g), massText(step, g)));
     spin->setSingleStep(step);
-    spin->setKeyboardTracking(false);  // one undo entry per entered value, not per keystroke
     spin->setValue(state_.actually_installed_kg[i]);
-    spin->installEventFilter(this);
+    spin->lineEdit()->installEventFilter(this);
     auto* label = new QLabel(q(ap.label) + ":");
     label->setBuddy(spin);
     const int row = static_cast<int>(i / 2), col = static_cast<int>(i % 2) * 2;
@@ -199,7 +197,7 @@ void AdjustmentPage::initializePage() {
     grid->addWidget(spin, row, col + 1);
     actual_.push_back(spin);
     actual_labels_.push_back(label);
-    connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double kg) {
+    connect(spin, &NumberInput::valueChanged, this, [this, i](double kg) {
       if (applying_) return;
       const double old = state_.actually_installed_kg[i];
       undo_->push(new SetInstalledCommand(this, i, old, kg));

@@ -4,7 +4,6 @@
 
 #include "wizard/wizard_state.h"
 
-class QDoubleSpinBox;
 class QGridLayout;
 class QLabel;
 class QListWidget;
@@ -13,6 +12,8 @@ class QUndoStack;
 class QAction;
 
 namespace auv::ui {
+
+class NumberInput;
 
 class WeightMapWidget;
 
@@ -56,7 +57,7 @@ class AdjustmentPage : public QWizardPage {
   QListWidget* checklist_;
   QLabel* progress_;
   QGridLayout* installed_grid_;
-  std::vector<QDoubleSpinBox*> actual_;
+  std::vector<NumberInput*> actual_;
   std::vector<QLabel*> actual_labels_;
   QLabel* actual_prediction_;
   QLabel* error_;

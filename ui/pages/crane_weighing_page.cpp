@@ -1,6 +1,5 @@
 #include "pages/crane_weighing_page.h"
 
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -27,22 +26,22 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   auto* sf = new QFormLayout(scalesBox);
   for (int i = 0; i < 4; ++i) {
     scales_[static_cast<std::size_t>(i)] =
-        makeSpin(ids[i], 0, 5000, 1, " kg",
+        makeNumber(ids[i], 0, 5000, 1, " kg",
              tr("Reading of the crane scale at this rope end, in kg, with the vehicle hanging still."));
     sf->addRow(names[i], scales_[static_cast<std::size_t>(i)]);
   }
-  total_ = makeSpin("total", 0, 10000, 1, " kg", tr("Reading of the scale on the crane hook (the whole vehicle)."));
-  sf->addRow(tr("&Hook (total):"), total_);
+  total_ = makeNumber("total", 0, 10000, 1, " kg", tr("Reading of the scale on the crane hook (the whole vehicle)."));
+  sf->addRow(tr("Hoo&k (total):"), total_);
   sum_check_ = new QLabel;
   sum_check_->setObjectName("sum_check");
   sf->addRow(QString(), sum_check_);
 
   auto* ropeBox = new QGroupBox(tr("Rope positions"));
   auto* rf = new QFormLayout(ropeBox);
-  rope_fore_ = makeSpin("rope_fore", -20, 20, 4, " m",
+  rope_fore_ = makeNumber("rope_fore", -20, 20, 4, " m",
                     tr("x of the fore rope from the vehicle origin, forward positive (measure along the hull)."));
-  rope_aft_ = makeSpin("rope_aft", -20, 20, 4, " m", tr("x of the aft rope from the vehicle origin, forward positive."));
-  rope_y_ = makeSpin("rope_y", 0.01, 5, 3, " m", tr("Half the lateral distance between the two ends of one rope."));
+  rope_aft_ = makeNumber("rope_aft", -20, 20, 4, " m", tr("x of the aft rope from the vehicle origin, forward positive."));
+  rope_y_ = makeNumber("rope_y", 0.01, 5, 3, " m", tr("Half the lateral distance between the two ends of one rope."));
   rf->addRow(tr("&Fore rope x:"), rope_fore_);
   rf->addRow(tr("&Aft rope x:"), rope_aft_);
   rf->addRow(tr("Rope end &y (±):"), rope_y_);
@@ -51,8 +50,9 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   auto* inf = new QFormLayout(instBox);
   for (int i = 0; i < 4; ++i) {
     installed_[static_cast<std::size_t>(i)] =
-        makeSpin(QString("installed_%1").arg(i), 0, 200, 1, " kg", tr("Kit pieces already in this point, in kg."));
-    inf->addRow(names[i], installed_[static_cast<std::size_t>(i)]);
+        makeNumber(QString("installed_%1").arg(i), 0, 200, 1, " kg", tr("Kit pieces already in this point, in kg."));
+    // The scales own the shortcut letters of these names.
+    inf->addRow(QString(names[i]).remove('&'), installed_[static_cast<std::size_t>(i)]);
   }
   error_ = new QLabel;
   error_->setObjectName("error");
@@ -70,10 +70,10 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   lay->addWidget(error_);
   lay->addWidget(side_view_, 1);
 
-  for (auto* s : scales_) connect(s, &QDoubleSpinBox::valueChanged, this, [this] { updateSumCheck(); });
-  connect(total_, &QDoubleSpinBox::valueChanged, this, [this] { updateSumCheck(); });
+  for (auto* s : scales_) connect(s, &NumberInput::valueChanged, this, [this] { updateSumCheck(); });
+  connect(total_, &NumberInput::valueChanged, this, [this] { updateSumCheck(); });
   for (auto* s : {rope_fore_, rope_aft_, rope_y_}) {
-    connect(s, &QDoubleSpinBox::valueChanged, this, [this] { updateSideView(); });
+    connect(s, &NumberInput::valueChanged, this, [this] { updateSideView(); });
   }
 }
 

@@ -4,10 +4,11 @@
 
 #include "wizard/wizard_state.h"
 
-class QDoubleSpinBox;
 class QLabel;
 
 namespace auv::ui {
+
+class NumberInput;
 
 class CraneSideView;
 
@@ -30,12 +31,12 @@ class CraneWeighingPage : public QWizardPage {
   void updateSumCheck();
   void updateSideView();
   WizardState& state_;
-  std::array<QDoubleSpinBox*, 4> scales_{};
-  std::array<QDoubleSpinBox*, 4> installed_{};
-  QDoubleSpinBox* total_;
-  QDoubleSpinBox* rope_fore_;
-  QDoubleSpinBox* rope_aft_;
-  QDoubleSpinBox* rope_y_;
+  std::array<NumberInput*, 4> scales_{};
+  std::array<NumberInput*, 4> installed_{};
+  NumberInput* total_;
+  NumberInput* rope_fore_;
+  NumberInput* rope_aft_;
+  NumberInput* rope_y_;
   QLabel* sum_check_;
   QLabel* error_;
   CraneSideView* side_view_;

@@ -1,10 +1,14 @@
 #include "pages/first_mission_result_page.h"
 
+#include <QGridLayout>
+#include <QGroupBox>
 #include <QHeaderView>
 #include <QLabel>
 #include <QScrollArea>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <QRegularExpression>
+#include <algorithm>
 #include <cmath>
 
 #include "common/input_error.h"
@@ -55,7 +59,7 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   predicted_->setObjectName("predicted");
   predicted_->setWordWrap(true);
   QScrollArea* scroll = makeMessageArea("messages", &messages_);
-  scroll->setMinimumHeight(90);
+  scroll->setMinimumHeight(60);
   save_status_ = makeErrorLabel("save_status");
   table_ = new QTableWidget(0, 3);
   table_->setObjectName("changes");
@@ -65,6 +69,9 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   table_->verticalHeader()->setDefaultSectionSize(26);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   map_ = new WeightMapWidget;
+  installed_box_ = new QGroupBox(tr("Installed now, after the work (what the next mission flies with)"));
+  installed_box_->setObjectName("installed_now");
+  installed_grid_ = new QGridLayout(installed_box_);
   auto* lay = new QVBoxLayout(this);
   lay->addWidget(before_);
   lay->addWidget(table_);
@@ -73,6 +80,7 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   lay->addWidget(map_, 3);
   lay->addWidget(predicted_);
   lay->addWidget(scroll, 2);
+  lay->addWidget(installed_box_);
   lay->addWidget(save_status_);
 }
 
@@ -86,6 +94,7 @@ void FirstMissionResultPage::initializePage() {
     if (!state_.vehicle) throw InputError("vehicle", "no vehicle chosen", "go back to the vehicle page");
     state_.report = tank ? slocumFirstMission(*state_.vehicle, state_.tank) : craneFirstMission(*state_.vehicle, state_.crane);
     showReport(*state_.report);
+    buildInstalledInputs(*state_.report);
   } catch (const InputError& e) {
     state_.last_error = e.what();
     before_->setText(tr("Cannot compute: %1").arg(QString::fromStdString(e.what())));
@@ -145,21 +154,73 @@ void FirstMissionResultPage::showReport(const FirstMissionReport& r) {
   QStringList msgs;
   for (const auto& w : r.warnings) msgs << tr("⚠ %1").arg(QString::fromStdString(w));
   for (const auto& n : r.notes) msgs << QString::fromStdString(n);
-  messages_->setText(msgs.join("\n"));
+  // Core's advice names points by their profile ids (fore_port); the
+  // technician reads the profile's labels (the longest id first, so that
+  // "fore_port" is not half-replaced inside a longer id).
+  QString text = msgs.join("\n");
+  std::vector<const AdjustmentPoint*> pts;
+  for (const auto& p : state_.vehicle->points) pts.push_back(&p);
+  std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->name.size() > b->name.size(); });
+  for (const auto* p : pts) {
+    const QRegularExpression id("\\b" + QRegularExpression::escape(QString::fromStdString(p->name)) + "\\b");
+    text.replace(id, QString::fromStdString(p->label));
+  }
+  messages_->setText(text);
 }
 
+void FirstMissionResultPage::buildInstalledInputs(const FirstMissionReport& r) {
+  for (auto* w : installed_box_->findChildren<QWidget*>(Qt::FindDirectChildrenOnly)) delete w;
+  installed_.clear();
+  const VehicleProfile& v = *state_.vehicle;
+  const bool g = state_.isGlider();
+  const std::vector<double> before = installedPerPoint(state_, r);
+  const bool resumed = state_.actually_installed_kg.size() == v.points.size();
+  for (std::size_t i = 0; i < v.points.size(); ++i) {
+    const auto& p = v.points[i];
+    double kg = i < before.size() ? before[i] : 0.0;
+    for (const auto& rp : r.points)
+      if (rp.name == p.name) kg += rp.add_kg;
+    if (resumed) kg = state_.actually_installed_kg[i];
+    const double scale = g ? 1000.0 : 1.0;
+    auto* in = makeNumber(QString("installed_now_%1").arg(i), 0.0, std::max(p.capacity_kg, 1.0) * scale * 2, g ? 0 : 2,
+                          g ? tr("g") : tr("kg"),
+                          tr("What is in '%1' now that the work is done (the recommended result is filled in; "
+                             "change it if you installed something else).").arg(QString::fromStdString(p.label)));
+    in->setValue(std::max(0.0, kg) * scale);
+    auto* label = new QLabel(QString::fromStdString(p.label) + ":");
+    label->setBuddy(in);
+    const int row = static_cast<int>(i / 3), col = static_cast<int>(i % 3) * 2;
+    installed_grid_->addWidget(label, row, col);
+    installed_grid_->addWidget(in, row, col + 1);
+    installed_.push_back(in);
+  }
+  storeInstalled();
+}
+
+void FirstMissionResultPage::storeInstalled() {
+  if (installed_.empty()) return;
+  const double scale = state_.isGlider() ? 1000.0 : 1.0;
+  state_.actually_installed_kg.clear();
+  for (auto* in : installed_) state_.actually_installed_kg.push_back(in->value() / scale);
+}
+
+void FirstMissionResultPage::cleanupPage() { storeInstalled(); }
+
 bool FirstMissionResultPage::validatePage() {
+  storeInstalled();
   // Finish: the session goes into the history as one transaction.
   auto* wiz = qobject_cast<OperatorWizard*>(wizard());
   if (!state_.report) return false;
   HistoryStore* store = wiz ? wiz->history() : nullptr;
-  if (!store) return true;  // the start page said the history is unavailable
+  if (!store) return !wiz || wiz->confirmCloseWithoutHistory();
   try {
     saveFirstMissionToHistory(*store, state_, wiz->now());
   } catch (const InputError& e) {
     save_status_->setText(tr("Not saved: %1").arg(QString::fromStdString(e.what())));
     return false;
   }
+  wiz->reportSaved(tr("Saved configuration %1: weighing, water, recommendation and installed state.")
+                       .arg(QString::fromStdString(state_.configuration_id)));
   return true;
 }
 

@@ -3,11 +3,14 @@
 
 #include "wizard/wizard_state.h"
 
+class QGridLayout;
+class QGroupBox;
 class QLabel;
 class QTableWidget;
 
 namespace auv::ui {
 
+class NumberInput;
 class WeightMapWidget;
 
 // Shows the core's first-mission report, whichever weighing produced it
@@ -20,11 +23,16 @@ class FirstMissionResultPage : public QWizardPage {
  public:
   explicit FirstMissionResultPage(WizardState& state);
   void initializePage() override;
+  void cleanupPage() override;
   bool validatePage() override;
   int nextId() const override { return -1; }
 
  private:
   void showReport(const FirstMissionReport& r);
+  // "What is actually installed now", one field per point, pre-filled with
+  // what was there plus the recommended change; saved as the installed state.
+  void buildInstalledInputs(const FirstMissionReport& r);
+  void storeInstalled();
   WizardState& state_;
   QLabel* before_;
   QLabel* predicted_;
@@ -32,6 +40,9 @@ class FirstMissionResultPage : public QWizardPage {
   QLabel* save_status_;
   QTableWidget* table_;
   WeightMapWidget* map_;
+  QGroupBox* installed_box_;
+  QGridLayout* installed_grid_;
+  std::vector<NumberInput*> installed_;
 };
 
 }  // namespace auv::ui

@@ -1,6 +1,5 @@
 #include "pages/log_import_page.h"
 
-#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -24,6 +23,7 @@
 #include "missionlog/log_reader.h"
 #include "widgets/column_mapping_dialog.h"
 #include "widgets/inputs.h"
+#include "wizard/installed_from_log.h"
 #include "wizard/column_mapping_store.h"
 #include "wizard/operator_wizard.h"
 
@@ -162,7 +162,7 @@ void LogImportPage::buildInstalledInputs() {
   installed_box_->setVisible(state_.vehicle && !state_.isGlider());
   if (id == installed_vehicle_ && installed_.size() == (state_.vehicle ? state_.vehicle->points.size() : 0u)) return;
   installed_vehicle_ = id;
-  for (QDoubleSpinBox* sb : installed_) delete sb;
+  for (NumberInput* sb : installed_) delete sb;
   installed_.clear();
   while (QLayoutItem* item = installed_grid_->takeAt(0)) {
     delete item->widget();
@@ -171,7 +171,7 @@ void LogImportPage::buildInstalledInputs() {
   if (!state_.vehicle) return;
   const auto& pts = state_.vehicle->points;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    auto* sb = makeSpin(QString("installed_%1").arg(q(pts[i].name)), 0.0, std::max(pts[i].capacity_kg, 1.0), 2,
+    auto* sb = makeNumber(QString("installed_%1").arg(q(pts[i].name)), 0.0, std::max(pts[i].capacity_kg, 1.0), 2,
                         tr(" kg"),
                         tr("Kit pieces at %1 during the logged mission, kg (what was installed before it flew, "
                            "not a planned change).").arg(q(pts[i].label)));
@@ -189,7 +189,7 @@ void LogImportPage::buildInstalledInputs() {
 
 std::vector<double> LogImportPage::installedKg() const {
   std::vector<double> out;
-  for (const QDoubleSpinBox* sb : installed_) out.push_back(sb->value());
+  for (const NumberInput* sb : installed_) out.push_back(sb->value());
   return out;
 }
 
@@ -216,8 +216,8 @@ void LogImportPage::browse() {
   const QString dir = settings.value("paths/last_log_folder").toString();
   const QStringList files = QFileDialog::getOpenFileNames(
       this, tr("Mission log"), dir,
-      tr("Mission logs (*.csv *.txt *.log *.asc *.dba *.nc *.gz *.dbd *.ebd *.sbd *.tbd *.mbd *.nbd *.dcd *.ecd "
-         "*.scd *.tcd);;All files (*)"));
+      tr("Mission logs (*.csv *.txt *.log *.dat *.asc *.dba *.nc *.gz *.dbd *.ebd *.sbd *.tbd *.mbd *.nbd *.dcd *.ecd "
+         "*.scd *.tcd *.mcd *.ncd);;All files (*)"));
   // Several files of one mission travel as one path list (LogImportJob splits it).
   if (!files.isEmpty()) startImport(files.join(kLogPathSeparator));
 }
@@ -287,6 +287,7 @@ void LogImportPage::onFinished(const LogImportOutcome& out) {
       state_.log_format = out.format;
       progress_->setValue(100);
       status_->setText(out.mapped ? tr("Read completely with the column mapping.") : tr("Read completely."));
+      prefillInstalledFromLog();
       // Vendor text without anything to analyse: the columns were not recognised.
       if (!out.mapped && out.format == DelimitedTextReader().formatName() && !out.log->has("depth") &&
           !out.log->has("pressure")) {
@@ -373,8 +374,34 @@ void LogImportPage::showSummary() {
 
 bool LogImportPage::isComplete() const { return state_.log != nullptr && !job_.running(); }
 
+void LogImportPage::prefillInstalledFromLog() {
+  // The history (or this session) said what was installed: that wins.
+  if (!state_.vehicle || installed_.empty()) return;
+  for (auto* in : installed_)
+    if (in->value() != 0.0) return;
+  const auto kg = installedFromLogHeader(*state_.log, *state_.vehicle);
+  if (!kg) return;
+  for (std::size_t i = 0; i < installed_.size(); ++i) installed_[i]->setValue((*kg)[i]);
+  status_->setText(status_->text() + "\n" +
+                   tr("Installed masses taken from the log's configuration line; check them below."));
+}
+
 bool LogImportPage::validatePage() {
   if (!isComplete()) return false;
+  // All zero is possible but rarely true: the analysis would blame the
+  // missing ballast on the vehicle. Ask before going on.
+  if (installed_box_->isVisible() && !installed_.empty()) {
+    bool all_zero = true;
+    for (auto* in : installed_) all_zero = all_zero && in->value() == 0.0;
+    auto* w = qobject_cast<OperatorWizard*>(wizard());
+    if (all_zero && w &&
+        !w->ask(tr("Nothing installed?"),
+                tr("Every installed mass is 0 kg. If adjustment weights were in the vehicle during this mission, "
+                   "enter them under \"Adjustment weight installed during this mission\" first: the analysis would otherwise put "
+                   "their weight into the vehicle's own balance. Analyse with nothing installed?"),
+                true))
+      return false;
+  }
   // The analysis and the model check follow from the log and this input;
   // the next pages compute them again.
   state_.mission_installed_kg = installedKg();

@@ -8,7 +8,6 @@
 #include "wizard/log_import_job.h"
 #include "wizard/wizard_state.h"
 
-class QDoubleSpinBox;
 class QGridLayout;
 class QGroupBox;
 class QLabel;
@@ -18,6 +17,8 @@ class QProgressBar;
 class QPushButton;
 
 namespace auv::ui {
+
+class NumberInput;
 
 class ColumnMappingDialog;
 
@@ -68,7 +69,8 @@ class LogImportPage : public QWizardPage {
   QPointer<ColumnMappingDialog> mapping_dialog_;
   QGroupBox* installed_box_;
   QGridLayout* installed_grid_;
-  std::vector<QDoubleSpinBox*> installed_;
+  std::vector<NumberInput*> installed_;
+  void prefillInstalledFromLog();
   std::string installed_vehicle_;  // profile the spin boxes were built for
   QProgressBar* progress_;
   QPushButton* cancel_;

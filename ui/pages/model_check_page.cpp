@@ -462,13 +462,14 @@ bool ModelCheckPage::validatePage() {
   // Last page of the post-mission sequence: Finish saves the mission.
   auto* wiz = qobject_cast<OperatorWizard*>(wizard());
   HistoryStore* store = wiz ? wiz->history() : nullptr;
-  if (!store) return true;
+  if (!store) return wiz->confirmCloseWithoutHistory();
   try {
     saveMissionToHistory(*store, state_, wiz->now());
   } catch (const InputError& e) {
     save_status_->setText(tr("Not saved: %1").arg(q(e.what())));
     return false;
   }
+  wiz->reportSaved(tr("Saved configuration %1: the mission log and its analysis.").arg(q(state_.configuration_id)));
   return true;
 }
 

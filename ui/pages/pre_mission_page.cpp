@@ -2,7 +2,6 @@
 
 #include <QButtonGroup>
 #include <QCheckBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -61,15 +60,15 @@ PreMissionPage::PreMissionPage(WizardState& state) : state_(state) {
   auto* srcGroup = new QButtonGroup(this);
   srcGroup->addButton(src_ctd_);
   srcGroup->addButton(src_operator_);
-  temperature_ = makeSpin("next_temperature", kNoTemperature, 40, 2, " °C",
+  temperature_ = makeNumber("next_temperature", kNoTemperature, 40, 2, " °C",
                           tr("Water temperature at the operating depth (CTD cast), in °C."));
   temperature_->setSpecialValueText(tr("enter °C"));
-  salinity_ = makeSpin("next_salinity", 0, 42, 2, " PSU", tr("Practical salinity at the operating depth (35 = open ocean)."));
-  depth_ = makeSpin("next_depth", 0, 6000, 1, " m", tr("Depth where the vehicle spends most of the mission: the band applies there."));
-  deepest_ = makeSpin("next_deepest", 0, 6000, 1, " m",
-                      tr("Deepest planned depth, if deeper than the operating depth: the vehicle must not be heavy there "
-                         "either. 0 = not deeper."));
-  latitude_ = makeSpin("next_latitude", -90, 90, 1, " °", tr("Latitude of the area (gravity for depth to pressure)."));
+  salinity_ = makeNumber("next_salinity", 0, 42, 2, " PSU", tr("Practical salinity at the operating depth (35 = open ocean)."));
+  depth_ = makeNumber("next_depth", 0, 6000, 1, " m", tr("Depth where the vehicle spends most of the mission: the band applies there."));
+  deepest_ = makeNumber("next_deepest", 0, 6000, 1, " m",
+                        tr("Deepest depth the mission goes to (the analysed log's deepest by default): the vehicle "
+                           "must not be heavy there either. At least the operating depth."));
+  latitude_ = makeNumber("next_latitude", -90, 90, 1, " °", tr("Latitude of the area (gravity for depth to pressure)."));
   stale_label_ = makeErrorLabel("temperature_stale");
   density_ = new QLabel;
   density_->setObjectName("next_density");
@@ -79,7 +78,7 @@ PreMissionPage::PreMissionPage(WizardState& state) : state_(state) {
   srcRow->addWidget(src_operator_);
   srcRow->addStretch();
   auto* wf = new QGridLayout;
-  auto addField = [&](int row, int col, const QString& text, QDoubleSpinBox* spin) {
+  auto addField = [&](int row, int col, const QString& text, NumberInput* spin) {
     auto* l = new QLabel(text);
     l->setBuddy(spin);
     wf->addWidget(l, row, col);
@@ -147,11 +146,8 @@ PreMissionPage::PreMissionPage(WizardState& state) : state_(state) {
     updatePreview();
   });
   for (auto* s : {temperature_, salinity_, depth_, deepest_, latitude_}) {
-    // The plan follows each entered value (Enter, Tab, arrows), not each
-    // keystroke: QWizard briefly hides the page when the Next button's state
-    // changes, and a spin box that loses focus mid-typing reformats "5." to "5.00".
-    s->setKeyboardTracking(false);
-    connect(s, &QDoubleSpinBox::valueChanged, this, [this] { updatePreview(); });
+    // The plan follows each entered value (Enter, Tab, arrows), not each keystroke.
+    connect(s, &NumberInput::valueChanged, this, [this] { updatePreview(); });
   }
   for (auto* r : {policy_exact_, policy_half_, policy_classic_}) {
     connect(r, &QRadioButton::toggled, this, [this](bool on) {
@@ -207,7 +203,17 @@ void PreMissionPage::initializePage() {
   salinity_->setValue(w.salinity_psu);
   depth_->setValue(w.depth_m);
   latitude_->setValue(w.latitude_deg);
-  deepest_->setValue(state_.next_deepest_m);
+  // The deepest depth: as entered, else as deep as the analysed log went,
+  // never shallower than the operating depth (the check would then cover
+  // the surface only).
+  double deepest = state_.next_deepest_m;
+  if (deepest <= 0.0 && state_.log) {
+    for (const auto& c : state_.log->channels)
+      if (c.name == "depth")
+        for (double d : c.values)
+          if (std::isfinite(d)) deepest = std::max(deepest, d);
+  }
+  deepest_->setValue(std::max(deepest, w.depth_m));
   src_ctd_->setEnabled(basis_.has_value() && !stale_);
   if (stale_ || !basis_ || operator_values) {
     src_operator_->setChecked(true);
@@ -320,6 +326,13 @@ std::optional<PreMissionPlan> PreMissionPage::computePlan(QString& error) {
     error = basis_error_;
     return std::nullopt;
   }
+  if (deepest_->value() < depth_->value()) {
+    error = tr("Deepest depth: %1 m is shallower than the operating depth (%2 m); enter the deepest depth the "
+               "mission goes to, at least %2 m.")
+                .arg(deepest_->value(), 0, 'f', 1)
+                .arg(depth_->value(), 0, 'f', 1);
+    return std::nullopt;
+  }
   if (!temperatureEntered()) {
     error = tr("Enter the next mission's water temperature.");
     return std::nullopt;
@@ -380,13 +393,14 @@ bool PreMissionPage::validatePage() {
     // Last page of this post-mission session: Finish saves the mission.
     OperatorWizard* w = wiz();
     HistoryStore* history = w ? w->history() : nullptr;
-    if (!history) return true;
+    if (!history) return !w || w->confirmCloseWithoutHistory();
     try {
       saveMissionToHistory(*history, state_, w->now());
     } catch (const InputError& e) {
       save_status_->setText(tr("Not saved: %1").arg(q(e.what())));
       return false;
     }
+    w->reportSaved(tr("Saved configuration %1: the mission log and its analysis.").arg(q(state_.configuration_id)));
     return true;
   }
   QString error;

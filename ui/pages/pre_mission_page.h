@@ -6,12 +6,13 @@
 #include "wizard/wizard_state.h"
 
 class QCheckBox;
-class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
 class QRadioButton;
 
 namespace auv::ui {
+
+class NumberInput;
 
 class OperatorWizard;
 
@@ -60,11 +61,11 @@ class PreMissionPage : public QWizardPage {
   QLabel* installed_;
   QRadioButton* src_ctd_;
   QRadioButton* src_operator_;
-  QDoubleSpinBox* temperature_;
-  QDoubleSpinBox* salinity_;
-  QDoubleSpinBox* depth_;
-  QDoubleSpinBox* deepest_;
-  QDoubleSpinBox* latitude_;
+  NumberInput* temperature_;
+  NumberInput* salinity_;
+  NumberInput* depth_;
+  NumberInput* deepest_;
+  NumberInput* latitude_;
   QLabel* stale_label_;
   QLabel* density_;
   QLabel* water_error_;

@@ -33,7 +33,7 @@ RollTestPage::RollTestPage(WizardState& state) : state_(state) {
   setSubTitle(tr("Wings off, glider hanging free from the nose hook and tail loop. Read m_roll with nothing hung, "
                  "then with each known mass hung on a wing rail."));
 
-  after_step_ = new QCheckBox(tr("&Bottles set after the tank step"));
+  after_step_ = new QCheckBox(tr("Bottles set after the tank st&ep"));
   after_step_->setObjectName("after_step");
   after_step_->setToolTip(tr("Tick when you have changed the bottles as the tank step said: the roll test then "
                              "refers to these contents."));
@@ -43,7 +43,7 @@ RollTestPage::RollTestPage(WizardState& state) : state_(state) {
   for (int i = 0; i < 4; ++i) {
     const auto item = static_cast<SlocumItem>(i);
     after_[static_cast<std::size_t>(i)] =
-        makeSpin(QString("after_%1").arg(slocumItemName(item)), 0, 5000, 0, tr(" g"),
+        makeNumber(QString("after_%1").arg(slocumItemName(item)), 0, 5000, 0, tr(" g"),
                  tr("Lead shot actually in this bottle after the tank step, in grams."));
     af->addRow(tr(kBottleLabels[i]), after_[static_cast<std::size_t>(i)]);
   }
@@ -58,9 +58,9 @@ RollTestPage::RollTestPage(WizardState& state) : state_(state) {
   roll_done_ = new QCheckBox(tr("Roll &test done"));
   roll_done_->setObjectName("roll_done");
   roll_done_->setToolTip(tr("Untick to compute without a roll test (the CG height then comes from the profile)."));
-  initial_roll_ = makeSpin("initial_roll", -1, 1, 3, tr(" rad"),
+  initial_roll_ = makeNumber("initial_roll", -1, 1, 3, tr(" rad"),
                            tr("m_roll with nothing hung, in radians as the glider reports it (starboard down positive)."));
-  lever_arm_ = makeSpin("lever_arm", 0.01, 1, 4, tr(" m"),
+  lever_arm_ = makeNumber("lever_arm", 0.01, 1, 4, tr(" m"),
                         tr("Horizontal distance from the hull axis to where the mass hangs (the hull radius for a "
                            "mass on the rail)."));
   table_ = new QTableWidget(0, 3);
@@ -101,13 +101,13 @@ RollTestPage::RollTestPage(WizardState& state) : state_(state) {
   for (int k = 0; k < 3; ++k) {
     dg->addWidget(new QLabel(tr("Column %1").arg(cols[k])), 0, k + 1);
     for (int b = 0; b < 2; ++b) {
-      auto* s = makeSpin(QString("disk_%1_%2").arg(cols[k], b == 0 ? "top" : "bottom"), 0, 5000, 0, tr(" g"),
+      auto* s = makeNumber(QString("disk_%1_%2").arg(cols[k], b == 0 ? "top" : "bottom"), 0, 5000, 0, tr(" g"),
                          tr("Disk weight in this seat, in grams (0 = empty)."));
       disks_[static_cast<std::size_t>(2 * k + b)] = s;
       dg->addWidget(s, b + 1, k + 1);
     }
   }
-  battery_angle_ = makeSpin("battery_angle", -1.5, 1.5, 4, tr(" rad"),
+  battery_angle_ = makeNumber("battery_angle", -1.5, 1.5, 4, tr(" rad"),
                             tr("Roll battery angle now; positive = swung to starboard."));
   dg->addWidget(new QLabel(tr("Battery:")), 3, 0);
   dg->addWidget(battery_angle_, 3, 1, 1, 3);
@@ -140,9 +140,9 @@ RollTestPage::RollTestPage(WizardState& state) : state_(state) {
       w->setEnabled(roll_done_->isChecked());
     updatePreview();
   });
-  for (auto* s : after_) connect(s, &QDoubleSpinBox::valueChanged, this, refresh);
-  for (auto* s : disks_) connect(s, &QDoubleSpinBox::valueChanged, this, refresh);
-  for (auto* s : {initial_roll_, lever_arm_, battery_angle_}) connect(s, &QDoubleSpinBox::valueChanged, this, refresh);
+  for (auto* s : after_) connect(s, &NumberInput::valueChanged, this, refresh);
+  for (auto* s : disks_) connect(s, &NumberInput::valueChanged, this, refresh);
+  for (auto* s : {initial_roll_, lever_arm_, battery_angle_}) connect(s, &NumberInput::valueChanged, this, refresh);
   connect(use_recommended_, &QPushButton::clicked, this, [this] { fillRecommended(); });
   connect(add_row_, &QPushButton::clicked, this, [this] {
     addRow(0.5, false, 0.0);
@@ -159,7 +159,7 @@ int RollTestPage::rowCount() const { return table_->rowCount(); }
 void RollTestPage::addRow(double mass_kg, bool starboard, double roll_rad) {
   const int r = table_->rowCount();
   table_->insertRow(r);
-  auto* mass = makeSpin(QString("roll_mass_%1").arg(r), 0.001, 20, 3, tr(" kg"),
+  auto* mass = makeNumber(QString("roll_mass_%1").arg(r), 0.001, 20, 3, tr(" kg"),
                         tr("Submerged (apparent) mass of the weight you hung, in kg."));
   auto* rail = new QComboBox;
   rail->setObjectName(QString("roll_rail_%1").arg(r));
@@ -167,7 +167,7 @@ void RollTestPage::addRow(double mass_kg, bool starboard, double roll_rad) {
   rail->addItem(tr("Starboard"), true);
   rail->setToolTip(tr("The wing rail the mass hangs on."));
   rail->setMinimumHeight(32);
-  auto* roll = makeSpin(QString("roll_reading_%1").arg(r), -1.5, 1.5, 3, tr(" rad"),
+  auto* roll = makeNumber(QString("roll_reading_%1").arg(r), -1.5, 1.5, 3, tr(" rad"),
                         tr("m_roll with this mass hanging and the glider at rest, in radians."));
   mass->setValue(mass_kg);
   rail->setCurrentIndex(starboard ? 1 : 0);
@@ -175,8 +175,8 @@ void RollTestPage::addRow(double mass_kg, bool starboard, double roll_rad) {
   table_->setCellWidget(r, 0, mass);
   table_->setCellWidget(r, 1, rail);
   table_->setCellWidget(r, 2, roll);
-  connect(mass, &QDoubleSpinBox::valueChanged, this, [this] { updatePreview(); });
-  connect(roll, &QDoubleSpinBox::valueChanged, this, [this] { updatePreview(); });
+  connect(mass, &NumberInput::valueChanged, this, [this] { updatePreview(); });
+  connect(roll, &NumberInput::valueChanged, this, [this] { updatePreview(); });
   connect(rail, &QComboBox::currentIndexChanged, this, [this] { updatePreview(); });
 }
 
@@ -231,9 +231,9 @@ void RollTestPage::store(TankWeighing& w) const {
     t.lever_arm_m = lever_arm_->value();
     for (int r = 0; r < table_->rowCount(); ++r) {
       RollTestRecord::Hang h;
-      h.mass_kg = qobject_cast<QDoubleSpinBox*>(table_->cellWidget(r, 0))->value();
+      h.mass_kg = qobject_cast<NumberInput*>(table_->cellWidget(r, 0))->value();
       h.starboard = qobject_cast<QComboBox*>(table_->cellWidget(r, 1))->currentData().toBool();
-      h.roll_rad = qobject_cast<QDoubleSpinBox*>(table_->cellWidget(r, 2))->value();
+      h.roll_rad = qobject_cast<NumberInput*>(table_->cellWidget(r, 2))->value();
       t.applied.push_back(h);
     }
     w.roll_test = t;

@@ -6,12 +6,13 @@
 
 class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 class QTableWidget;
 
 namespace auv::ui {
+
+class NumberInput;
 
 // Slocum roll test (Baird 2007 §4.2): with the bottles set after the tank
 // step, the wingless glider hangs from nose hook and tail loop; the roll
@@ -39,16 +40,16 @@ class RollTestPage : public QWizardPage {
   void fillRecommended();
   WizardState& state_;
   QCheckBox* after_step_;
-  std::array<QDoubleSpinBox*, 4> after_{};
+  std::array<NumberInput*, 4> after_{};
   QPushButton* use_recommended_;
   QCheckBox* roll_done_;
-  QDoubleSpinBox* initial_roll_;
-  QDoubleSpinBox* lever_arm_;
+  NumberInput* initial_roll_;
+  NumberInput* lever_arm_;
   QTableWidget* table_;
   QPushButton* add_row_;
   QPushButton* remove_row_;
-  std::array<QDoubleSpinBox*, 6> disks_{};  // A top, A bottom, B top, ...
-  QDoubleSpinBox* battery_angle_;
+  std::array<NumberInput*, 6> disks_{};  // A top, A bottom, B top, ...
+  NumberInput* battery_angle_;
   QLabel* result_;
   QLabel* error_;
   bool ok_ = false;

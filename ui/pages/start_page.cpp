@@ -1,6 +1,7 @@
 #include "pages/start_page.h"
 
 #include <QButtonGroup>
+#include <QDir>
 #include <QFileInfo>
 #include <QFrame>
 #include <QGroupBox>
@@ -96,7 +97,7 @@ StartPage::StartPage(WizardState& state) : state_(state) {
   mode_post_ = new QRadioButton(tr("&Post mission: import a mission log and look at the deviations"));
   mode_post_->setObjectName("mode_post");
   mode_post_->setToolTip(tr("You have a log of a mission flown with this configuration."));
-  mode_pre_ = new QRadioButton(tr("P&re mission: plan the next mission from the analysed log"));
+  mode_pre_ = new QRadioButton(tr("Pre &mission: plan the next mission from the analysed log"));
   mode_pre_->setObjectName("mode_pre");
   mode_pre_->setToolTip(tr("Plan the next mission from the last analysed mission of this configuration: needs an "
                            "analysis in the history (post-mission mode) or in this session."));
@@ -112,6 +113,10 @@ StartPage::StartPage(WizardState& state) : state_(state) {
   ml->addWidget(mode_pre_);
 
   error_ = makeErrorLabel();
+  history_location_ = new QLabel;
+  history_location_->setObjectName("history_location");
+  history_location_->setWordWrap(true);
+  history_location_->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
   auto* searchRow = new QHBoxLayout;
   searchRow->addWidget(searchLabel);
@@ -124,6 +129,7 @@ StartPage::StartPage(WizardState& state) : state_(state) {
   lay->addLayout(searchRow);
   lay->addWidget(table_, 1);
   lay->addLayout(lower);
+  lay->addWidget(history_location_);
   lay->addWidget(error_);
 
   connect(search_, &QLineEdit::textChanged, this, [this] { refreshTable(); });
@@ -148,8 +154,11 @@ OperatorWizard* StartPage::wiz() const { return qobject_cast<OperatorWizard*>(wi
 void StartPage::initializePage() {
   error_->clear();
   if (HistoryStore* store = wiz()->history(); !store) {
+    history_location_->clear();
     error_->setText(tr("The history cannot be opened (%1); you can still work, but nothing will be saved.")
                         .arg(wiz()->historyError()));
+  } else {
+    history_location_->setText(tr("History: %1").arg(QDir::toNativeSeparators(historyFilePath())));
   }
   refreshTable();
   mode_first_->setChecked(state_.mode == SessionMode::kFirstMission);

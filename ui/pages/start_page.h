@@ -46,6 +46,7 @@ class StartPage : public QWizardPage {
   QPushButton* resume_;
   QPushButton* discard_;
   QLineEdit* search_;
+  QLabel* history_location_;
   QTableWidget* table_;
   QLabel* last_state_;
   QLabel* temperature_;

@@ -194,13 +194,16 @@ bool SummaryPage::validatePage() {
   OperatorWizard* w = wiz();
   if (!basis_ || !state_.plan) return false;
   HistoryStore* store = w ? w->history() : nullptr;
-  if (!store) return true;  // the start page said the history is unavailable
+  if (!store) return !w || w->confirmCloseWithoutHistory();
   try {
     savePreMissionToHistory(*store, state_, *basis_, w->now());
   } catch (const InputError& e) {
     save_status_->setText(tr("Not saved: %1").arg(q(e.what())));
     return false;
   }
+  w->reportSaved(tr("Saved configuration %1: %2the plan, the next mission's water and the installed state.")
+                     .arg(q(state_.configuration_id),
+                          state_.mode == SessionMode::kPostMission && state_.log ? tr("the mission log, ") : QString()));
   return true;
 }
 

@@ -39,18 +39,18 @@ TankWeighingPage::TankWeighingPage(WizardState& state) : state_(state) {
   glider_->setObjectName("glider");
   glider_->setToolTip(tr("Glider serial number or name, for the record."));
   glider_->setMinimumHeight(32);
-  dry_mass_ = makeSpin("dry_mass", 1, 1000, 3, tr(" kg"),
+  dry_mass_ = makeNumber("dry_mass", 1, 1000, 3, tr(" kg"),
                        tr("Mass of the complete glider in air (wings and ballast as now), from a calibrated scale."));
-  bow_scale_ = makeSpin("bow_scale", 0, 100000, 0, tr(" g"),
+  bow_scale_ = makeNumber("bow_scale", 0, 100000, 0, tr(" g"),
                         tr("Spring scale hanging directly above the bow ballast bottles, glider fully submerged "
                            "and still. Read it at eye level, in grams."));
-  aft_scale_ = makeSpin("aft_scale", 0, 100000, 0, tr(" g"),
+  aft_scale_ = makeNumber("aft_scale", 0, 100000, 0, tr(" g"),
                         tr("Spring scale hanging directly above the aft ballast bottles, read at the same time."));
   auto* gBox = new QGroupBox(tr("Glider and spring scales"));
   auto* gf = new QFormLayout(gBox);
   gf->addRow(tr("Gl&ider:"), glider_);
   gf->addRow(tr("&Dry mass:"), dry_mass_);
-  gf->addRow(tr("&Bow scale:"), bow_scale_);
+  gf->addRow(tr("Bow s&cale:"), bow_scale_);
   gf->addRow(tr("&Aft scale:"), aft_scale_);
 
   tank_water_ = new QComboBox;
@@ -60,18 +60,18 @@ TankWeighingPage::TankWeighingPage(WizardState& state) : state_(state) {
   tank_water_->setToolTip(tr("Fresh tank water is taken as 1000 kg/m³ unless you measured it; salt water needs "
                              "its measured density."));
   tank_water_->setMinimumHeight(32);
-  tank_density_ = makeSpin("tank_density", 990, 1050, 2, tr(" kg/m³"),
+  tank_density_ = makeNumber("tank_density", 990, 1050, 2, tr(" kg/m³"),
                            tr("Density of the tank water (hydrometer or CTD)."));
-  tank_temperature_ = makeSpin("tank_temperature", -2, 40, 1, tr(" °C"),
+  tank_temperature_ = makeNumber("tank_temperature", -2, 40, 1, tr(" °C"),
                                tr("Tank water temperature next to the glider, at mid depth."));
-  target_density_ = makeSpin("target_density", 990, 1060, 2, tr(" kg/m³"),
+  target_density_ = makeNumber("target_density", 990, 1060, 2, tr(" kg/m³"),
                              tr("Density of the water the glider will fly in (from a CTD cast or the area's climatology)."));
-  target_temperature_ = makeSpin("target_temperature", -2.5, 40, 1, tr(" °C"),
+  target_temperature_ = makeNumber("target_temperature", -2.5, 40, 1, tr(" °C"),
                                  tr("Temperature of the deployment water: the aluminium hull shrinks in cold water."));
   auto* wBox = new QGroupBox(tr("Water"));
   auto* wf = new QFormLayout(wBox);
   wf->addRow(tr("Tank &water:"), tank_water_);
-  wf->addRow(tr("Tank de&nsity:"), tank_density_);
+  wf->addRow(tr("Tank d&ensity:"), tank_density_);
   wf->addRow(tr("Tank te&mperature:"), tank_temperature_);
   wf->addRow(tr("Ta&rget density:"), target_density_);
   wf->addRow(tr("Tar&get temperature:"), target_temperature_);
@@ -80,7 +80,7 @@ TankWeighingPage::TankWeighingPage(WizardState& state) : state_(state) {
   auto* bf = new QFormLayout(bBox);
   for (int i = 0; i < kSlocumItemCount; ++i) {
     const auto item = static_cast<SlocumItem>(i);
-    auto* s = makeSpin(QString("ballast_%1").arg(slocumItemName(item)), 0, 5000, 0, tr(" g"),
+    auto* s = makeNumber(QString("ballast_%1").arg(slocumItemName(item)), 0, 5000, 0, tr(" g"),
                        i < 4 ? tr("Lead shot in this ballast bottle now, in grams (weigh the bottle contents).")
                              : tr("Brass in this wing rail now, in grams."));
     ballast_[static_cast<std::size_t>(i)] = s;
@@ -106,9 +106,9 @@ TankWeighingPage::TankWeighingPage(WizardState& state) : state_(state) {
   connect(tank_water_, &QComboBox::currentIndexChanged, this, [this] { applyWaterChoice(); });
   for (auto* s : {dry_mass_, bow_scale_, aft_scale_, tank_density_, tank_temperature_, target_density_,
                   target_temperature_}) {
-    connect(s, &QDoubleSpinBox::valueChanged, this, [this] { updatePreview(); });
+    connect(s, &NumberInput::valueChanged, this, [this] { updatePreview(); });
   }
-  for (auto* s : ballast_) connect(s, &QDoubleSpinBox::valueChanged, this, [this] { updatePreview(); });
+  for (auto* s : ballast_) connect(s, &NumberInput::valueChanged, this, [this] { updatePreview(); });
 }
 
 void TankWeighingPage::applyWaterChoice() {

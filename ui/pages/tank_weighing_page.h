@@ -6,11 +6,12 @@
 #include "wizard/wizard_state.h"
 
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 
 namespace auv::ui {
+
+class NumberInput;
 
 // Slocum tank method (Baird 2007 §4.1): dry mass, the two spring scales over
 // the bow and aft bottles with the glider submerged, the tank water and the
@@ -34,15 +35,15 @@ class TankWeighingPage : public QWizardPage {
   void applyWaterChoice();
   WizardState& state_;
   QLineEdit* glider_;
-  QDoubleSpinBox* dry_mass_;
-  QDoubleSpinBox* bow_scale_;
-  QDoubleSpinBox* aft_scale_;
+  NumberInput* dry_mass_;
+  NumberInput* bow_scale_;
+  NumberInput* aft_scale_;
   QComboBox* tank_water_;
-  QDoubleSpinBox* tank_density_;
-  QDoubleSpinBox* tank_temperature_;
-  QDoubleSpinBox* target_density_;
-  QDoubleSpinBox* target_temperature_;
-  std::array<QDoubleSpinBox*, kSlocumItemCount> ballast_{};
+  NumberInput* tank_density_;
+  NumberInput* tank_temperature_;
+  NumberInput* target_density_;
+  NumberInput* target_temperature_;
+  std::array<NumberInput*, kSlocumItemCount> ballast_{};
   QLabel* result_;
   QLabel* error_;
   bool ok_ = false;

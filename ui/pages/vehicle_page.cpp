@@ -34,7 +34,16 @@ VehiclePage::VehiclePage(WizardState& state) : state_(state) {
   vehicle_->setToolTip(tr("The vehicle profile: hull volume, centre of buoyancy, adjustment points and weight kit."));
   vehicle_->setMinimumHeight(32);
   VehicleCatalog cat(state_.vehicles_dir);
-  for (const auto& id : cat.ids()) vehicle_->addItem(QString::fromStdString(id));
+  // The vehicle's name as the technician knows it; the profile id stays behind it.
+  for (const auto& id : cat.ids()) {
+    QString name = QString::fromStdString(id);
+    try {
+      name = QString::fromStdString(cat.load(id).name);
+    } catch (const InputError&) {
+      // A damaged profile is listed by its id; choosing it shows the problem.
+    }
+    vehicle_->addItem(name, QString::fromStdString(id));
+  }
   config_ = line("configuration", tr("Configuration ID as on the vehicle's ballasting sheet: three groups of "
                                      "letters or digits, e.g. 01-02-03 (vehicle, payload set, water)."));
   config_->setPlaceholderText(tr("e.g. 01-02-03"));
@@ -61,12 +70,12 @@ VehiclePage::VehiclePage(WizardState& state) : state_(state) {
   lay->addWidget(summary_);
   lay->addWidget(error_);
   lay->addStretch();
-  connect(vehicle_, &QComboBox::currentTextChanged, this, [this] { showProfile(); });
+  connect(vehicle_, &QComboBox::currentIndexChanged, this, [this] { showProfile(); });
   connect(config_, &QLineEdit::textChanged, this, [this] { checkId(); });
 }
 
 void VehiclePage::initializePage() {
-  if (state_.vehicle) vehicle_->setCurrentText(QString::fromStdString(state_.vehicle->id));
+  if (state_.vehicle) vehicle_->setCurrentIndex(vehicle_->findData(QString::fromStdString(state_.vehicle->id)));
   config_->setText(QString::fromStdString(state_.configuration_id));
   payload_->setText(QString::fromStdString(state_.payload_note));
   area_->setText(QString::fromStdString(state_.area));
@@ -94,7 +103,7 @@ void VehiclePage::checkId() {
 
 void VehiclePage::showProfile() {
   try {
-    const VehicleProfile v = VehicleCatalog(state_.vehicles_dir).load(vehicle_->currentText().toStdString());
+    const VehicleProfile v = VehicleCatalog(state_.vehicles_dir).load(vehicle_->currentData().toString().toStdString());
     summary_->setText(tr("%1: %2 kg in air, hull volume %3 m³, %4 adjustment points; weighed by %5.")
                           .arg(QString::fromStdString(v.name))
                           .arg(v.mass_kg, 0, 'f', 1)
@@ -116,7 +125,7 @@ void VehiclePage::cleanupPage() {
   state_.area = area_->text().toStdString();
   state_.water_type = water_type_->text().toStdString();
   try {
-    state_.vehicle = VehicleCatalog(state_.vehicles_dir).load(vehicle_->currentText().toStdString());
+    state_.vehicle = VehicleCatalog(state_.vehicles_dir).load(vehicle_->currentData().toString().toStdString());
   } catch (const InputError&) {
   }
 }
@@ -124,7 +133,7 @@ void VehiclePage::cleanupPage() {
 bool VehiclePage::validatePage() {
   const std::string id = config_->text().trimmed().toStdString();
   try {
-    state_.vehicle = VehicleCatalog(state_.vehicles_dir).load(vehicle_->currentText().toStdString());
+    state_.vehicle = VehicleCatalog(state_.vehicles_dir).load(vehicle_->currentData().toString().toStdString());
     requireValidConfigurationId(id);
     if (!state_.configuration_in_history) {
       auto* wiz = qobject_cast<OperatorWizard*>(wizard());

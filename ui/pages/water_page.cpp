@@ -1,7 +1,6 @@
 #include "pages/water_page.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QVBoxLayout>
@@ -31,7 +30,7 @@ constexpr WaterType kWaterTypes[] = {
 WaterPage::WaterPage(WizardState& state) : state_(state) {
   setTitle(tr("Mission water"));
   setSubTitle(tr("Where will the vehicle fly? Density includes pressure at the operating depth."));
-  temperature_ = makeSpin("temperature", -2, 40, 2, " °C",
+  temperature_ = makeNumber("temperature", -2, 40, 2, " °C",
                       tr("Water temperature at the operating depth if you know it (CTD cast), else at the surface."));
   water_type_ = new QComboBox;
   water_type_->setObjectName("water_type");
@@ -39,9 +38,9 @@ WaterPage::WaterPage(WizardState& state) : state_(state) {
   for (const auto& t : kWaterTypes) water_type_->addItem(tr(t.name), t.salinity_psu);
   water_type_->setToolTip(tr("Pick a water type if you have no salinity measurement (thesis Table 2.1)."));
   water_type_->setMinimumHeight(32);
-  salinity_ = makeSpin("salinity", 0, 42, 2, " PSU", tr("Practical salinity of the mission water."));
-  depth_ = makeSpin("depth", 0, 6000, 1, " m", tr("Depth where the vehicle spends most of the mission."));
-  latitude_ = makeSpin("latitude", -90, 90, 1, " °", tr("Latitude of the area (gravity for depth to pressure)."));
+  salinity_ = makeNumber("salinity", 0, 42, 2, " PSU", tr("Practical salinity of the mission water."));
+  depth_ = makeNumber("depth", 0, 6000, 1, " m", tr("Depth where the vehicle spends most of the mission."));
+  latitude_ = makeNumber("latitude", -90, 90, 1, " °", tr("Latitude of the area (gravity for depth to pressure)."));
   density_ = new QLabel;
   density_->setObjectName("density");
   error_ = new QLabel;
@@ -63,7 +62,7 @@ WaterPage::WaterPage(WizardState& state) : state_(state) {
     if (s >= 0) salinity_->setValue(s);
   });
   for (auto* s : {temperature_, salinity_, depth_, latitude_}) {
-    connect(s, &QDoubleSpinBox::valueChanged, this, [this] { updateDensity(); });
+    connect(s, &NumberInput::valueChanged, this, [this] { updateDensity(); });
   }
 }
 

@@ -3,11 +3,12 @@
 
 #include "wizard/wizard_state.h"
 
-class QDoubleSpinBox;
 class QComboBox;
 class QLabel;
 
 namespace auv::ui {
+
+class NumberInput;
 
 // The water the next mission will fly in: temperature, salinity (typed, or a
 // water type from the thesis's Table 2.1) and the planned operating depth.
@@ -24,11 +25,11 @@ class WaterPage : public QWizardPage {
  private:
   void updateDensity();
   WizardState& state_;
-  QDoubleSpinBox* temperature_;
+  NumberInput* temperature_;
   QComboBox* water_type_;
-  QDoubleSpinBox* salinity_;
-  QDoubleSpinBox* depth_;
-  QDoubleSpinBox* latitude_;
+  NumberInput* salinity_;
+  NumberInput* depth_;
+  NumberInput* latitude_;
   QLabel* density_;
   QLabel* error_;
 };

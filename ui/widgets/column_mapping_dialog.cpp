@@ -3,7 +3,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -160,7 +159,7 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& file, const std::string&
   time_format_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   time_format_->setToolTip(tr("How the time column is written."));
   time_format_->setMinimumHeight(32);
-  utc_offset_ = makeSpin("utc_offset", -14.5, 14.0, 1, tr(" h"),
+  utc_offset_ = makeNumber("utc_offset", -14.5, 14.0, 1, tr(" h"),
                          tr("The logger clock runs at UTC + this many hours (e.g. 2 for CEST). Leave at "
                             "'not stated' when the times are UTC or carry their zone."));
   utc_offset_->setSingleStep(0.5);

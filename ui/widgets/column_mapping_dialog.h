@@ -17,12 +17,13 @@
 
 class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QTableWidget;
 
 namespace auv::ui {
+
+class NumberInput;
 
 class ColumnMappingDialog : public QDialog {
   Q_OBJECT
@@ -73,7 +74,7 @@ class ColumnMappingDialog : public QDialog {
   QComboBox* delimiter_;
   QComboBox* decimal_;
   QComboBox* time_format_;
-  QDoubleSpinBox* utc_offset_;  // minimum = not stated (UTC assumed)
+  NumberInput* utc_offset_;  // minimum = not stated (UTC assumed)
   QTableWidget* preview_;
   std::vector<Row> rows_;
   QCheckBox* save_;

@@ -1,13 +1,14 @@
 #pragma once
 // The input widgets every page uses, built the same way: an object name for
-// tests, the unit as a suffix, a tooltip saying what to measure and how, and
+// tests, the unit beside the field, a tooltip saying what to measure and how, and
 // a 32 px minimum height for gloved hands on a dockside laptop.
-#include <QDoubleSpinBox>
 #include <QFrame>
 #include <QLabel>
 #include <QScrollArea>
 #include <QString>
 #include <cmath>
+
+#include "widgets/number_input.h"
 
 namespace auv::ui {
 
@@ -28,16 +29,16 @@ inline QScrollArea* makeMessageArea(const QString& name, QLabel** label, Qt::Tex
   return scroll;
 }
 
-inline QDoubleSpinBox* makeSpin(const QString& name, double lo, double hi, int decimals, const QString& suffix,
-                                const QString& tip) {
-  auto* s = new QDoubleSpinBox;
+// Every numeric field: widgets/number_input.h (typed text is never rewritten
+// while typing; the unit is a label beside the field).
+inline NumberInput* makeNumber(const QString& name, double lo, double hi, int decimals, const QString& unit,
+                               const QString& tip) {
+  auto* s = new NumberInput(unit);
   s->setObjectName(name);
-  s->setRange(lo, hi);
   s->setDecimals(decimals);
-  s->setSuffix(suffix);
+  s->setRange(lo, hi);
   s->setToolTip(tip);
   s->setMinimumHeight(32);
-  s->setKeyboardTracking(true);
   return s;
 }
 

@@ -3,25 +3,29 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
-#include <QStandardPaths>
+
+#include "common/input_error.h"
+#include "history/default_location.h"
 
 namespace auv::ui {
-namespace {
 
-QString fromEnvOr(const char* name, const QString& fallback) {
-  const QString v = qEnvironmentVariable(name);
-  return v.isEmpty() ? fallback : v;
+QString historyFilePath() {
+  try {
+    return QString::fromStdString(defaultHistoryPath());
+  } catch (const InputError&) {
+    return QString();  // no HOME: the wizard's history() says why
+  }
 }
 
-QString appData(const QString& file) {
-  return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/" + file;
+QString autosaveFilePath() {
+  const QString env = qEnvironmentVariable("AUVBALLAST_AUTOSAVE");
+  if (!env.isEmpty()) return env;
+  try {
+    return QString::fromStdString(userDataFolder()) + "/session.json";
+  } catch (const InputError&) {
+    return QDir::tempPath() + "/auvballast-session.json";
+  }
 }
-
-}  // namespace
-
-QString historyFilePath() { return fromEnvOr("AUVBALLAST_HISTORY", appData("history.sqlite")); }
-
-QString autosaveFilePath() { return fromEnvOr("AUVBALLAST_AUTOSAVE", appData("session.json")); }
 
 QString userGuidePath() {
   const QString env = qEnvironmentVariable("AUVBALLAST_DOCS");

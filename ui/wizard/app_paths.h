@@ -1,8 +1,9 @@
 #pragma once
 // Where the GUI keeps its files. Each can be overridden by an environment
 // variable, which the tests use to work in a temporary directory:
-//   AUVBALLAST_HISTORY   the SQLite history (default <AppDataLocation>/history.sqlite)
-//   AUVBALLAST_AUTOSAVE  the unfinished session (default <AppDataLocation>/session.json)
+//   AUVBALLAST_HISTORY   the SQLite history (default $XDG_DATA_HOME/auvballast/history.sqlite,
+//                        the same file as the CLI's: history/default_location.h)
+//   AUVBALLAST_AUTOSAVE  the unfinished session (default $XDG_DATA_HOME/auvballast/session.json)
 //   AUVBALLAST_DOCS      the folder holding user-guide.md
 #include <QString>
 

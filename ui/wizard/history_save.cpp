@@ -61,7 +61,19 @@ void saveFirstMissionToHistory(HistoryStore& store, const WizardState& s, TimePo
   rec.policy = tank ? "tank" : "exact";
   rec.recommendation = toJson(r);
   rec.accepted = true;
-  store.addRecommendation(s.configuration_id, rec);
+  const RecordId rec_id = store.addRecommendation(s.configuration_id, rec);
+
+  // What the technician says is installed now: the post-mission analysis
+  // of the first mission starts from it.
+  if (s.actually_installed_kg.size() == s.vehicle->points.size()) {
+    InstalledState st;
+    st.installed_at = now;
+    st.recommendation_id = rec_id;
+    for (std::size_t i = 0; i < s.vehicle->points.size(); ++i)
+      st.points.push_back({s.vehicle->points[i].name, s.actually_installed_kg[i], {}});
+    st.note = "first mission: installed after the weighing";
+    store.addInstalledState(s.configuration_id, st);
+  }
   tx.commit();
 }
 

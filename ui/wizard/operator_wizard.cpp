@@ -1,12 +1,18 @@
 #include "wizard/operator_wizard.h"
 
 #include <QAbstractButton>
+#include <QApplication>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QRegularExpression>
 #include <QDateTime>
 #include <QFile>
 #include <QSettings>
 #include <QShortcut>
 
 #include "common/input_error.h"
+#include "history/default_location.h"
 #include "history/store.h"
 #include "pages/adjustment_page.h"
 #include "pages/crane_weighing_page.h"
@@ -22,6 +28,7 @@
 #include "pages/vehicle_page.h"
 #include "pages/water_page.h"
 #include "widgets/help_dialog.h"
+#include "widgets/number_input.h"
 #include "wizard/app_paths.h"
 
 namespace auv::ui {
@@ -42,6 +49,11 @@ OperatorWizard::OperatorWizard(WizardState state, QWidget* parent)
   for (auto b : {QWizard::BackButton, QWizard::NextButton, QWizard::FinishButton, QWizard::CancelButton,
                  QWizard::HelpButton}) {
     button(b)->setMinimumHeight(32);
+  }
+  // Enter is Next/Finish (the default button) even when Back, Cancel or Help
+  // has the focus: a focused auto-default button would take Enter instead.
+  for (auto b : {QWizard::BackButton, QWizard::CancelButton, QWizard::HelpButton}) {
+    if (auto* pb = qobject_cast<QPushButton*>(button(b))) pb->setAutoDefault(false);
   }
   setPage(kStart, new StartPage(state_));
   setPage(kVehicle, new VehiclePage(state_));
@@ -67,17 +79,30 @@ OperatorWizard::OperatorWizard(WizardState state, QWidget* parent)
     if (id > kStart) autosave();
   });
 
+  autosave_timer_.setSingleShot(true);
+  autosave_timer_.setInterval(autosaveDelayMs);
+  connect(&autosave_timer_, &QTimer::timeout, this, [this] {
+    if (currentId() <= kStart) return;
+    // The page's store-without-validating (what Back does), so the autosave
+    // holds the fields as they are now, including a value being typed.
+    if (QWizardPage* p = currentPage()) p->cleanupPage();
+    autosave();
+  });
+  qApp->installEventFilter(this);
+
   QSettings settings;
   if (!restoreGeometry(settings.value("wizard/geometry").toByteArray())) resize(1000, 760);
 }
 
-OperatorWizard::~OperatorWizard() = default;
+OperatorWizard::~OperatorWizard() { qApp->removeEventFilter(this); }
 
 HistoryStore* OperatorWizard::history() {
   if (!history_tried_) {
     history_tried_ = true;
     try {
-      history_ = std::make_unique<HistoryStore>(historyFilePath().toStdString());
+      const std::string path = historyFilePath().isEmpty() ? defaultHistoryPath() : historyFilePath().toStdString();
+      ensureHistoryFolder(path);  // the first launch for this user: the folder does not exist yet
+      history_ = std::make_unique<HistoryStore>(path);
     } catch (const InputError& e) {
       history_error_ = QString::fromStdString(e.what());
     }
@@ -116,10 +141,110 @@ void OperatorWizard::showHelp() {
   help_->raise();
 }
 
+namespace {
+OperatorWizard::Asker& defaultAsker() {
+  static OperatorWizard::Asker a;
+  return a;
+}
+}  // namespace
+
+void OperatorWizard::setDefaultAsker(Asker a) { defaultAsker() = std::move(a); }
+
+bool OperatorWizard::ask(const QString& title, const QString& text, bool question) {
+  if (asker_) return asker_(title, text, question);
+  if (defaultAsker()) return defaultAsker()(title, text, question);
+  if (!question) {
+    QMessageBox::information(this, title, text);
+    return true;
+  }
+  QMessageBox box(QMessageBox::Question, title, text, QMessageBox::NoButton, this);
+  QPushButton* yes = box.addButton(tr("&Close without saving"), QMessageBox::DestructiveRole);
+  QPushButton* no = box.addButton(tr("&Stay"), QMessageBox::RejectRole);
+  box.setDefaultButton(no);
+  box.setEscapeButton(no);
+  box.exec();
+  return box.clickedButton() == yes;
+}
+
+bool OperatorWizard::confirmCloseWithoutHistory() {
+  return ask(tr("Nothing will be saved"),
+             tr("The history cannot be opened (%1), so this session cannot be saved. Your input stays in "
+                "the unfinished session and is offered for resuming at the next start. Close anyway?")
+                 .arg(history_error_.isEmpty() ? historyFilePath() : history_error_),
+             true);
+}
+
+void OperatorWizard::reject() {
+  if (hasUnsavedInput()) {
+    if (currentPage()) currentPage()->cleanupPage();
+    autosave();
+    const bool close = ask(tr("Close without saving?"),
+                           tr("What you entered in this session is not in the history yet. It stays in the "
+                              "unfinished session, which the start page offers to resume. Close anyway?"),
+                           true);
+    if (!close) return;
+  }
+  QWizard::reject();
+}
+
+bool OperatorWizard::validateCurrentPage() {
+  // Every number field of the page is read now (a value still being typed
+  // counts); one that is not a number in range stops Next with its name.
+  if (QWizardPage* p = currentPage()) {
+    for (NumberInput* in : p->findChildren<NumberInput*>()) {
+      if (!in->isVisibleTo(p) || !in->isEnabled() || in->commit()) continue;
+      QString name = in->accessibleName();
+      for (QLabel* l : p->findChildren<QLabel*>())
+        if (l->buddy() == in) name = l->text().remove('&').remove(QRegularExpression(":$"));
+      const QString text = tr("%1: %2").arg(name, in->problem());
+      if (auto* err = p->findChild<QLabel*>("error")) {
+        err->setText(text);
+      } else {
+        in->lineEdit()->setToolTip(text);
+      }
+      in->setFocus(Qt::OtherFocusReason);
+      return false;
+    }
+  }
+  return QWizard::validateCurrentPage();
+}
+
+void OperatorWizard::initializePage(int id) {
+  QWizard::initializePage(id);
+  // Tab from the page's last field lands on Next (or Finish), so Enter after
+  // Tab goes forward; Back, Cancel and Help follow.
+  // Fields a page builds in initializePage join the chain at its end, after
+  // the buttons: the buttons go behind the window's last other widget.
+  const QList<QWidget*> buttons = {button(QWizard::NextButton), button(QWizard::FinishButton),
+                                   button(QWizard::CancelButton), button(QWizard::BackButton),
+                                   button(QWizard::HelpButton)};
+  QWidget* last = nullptr;
+  for (QWidget* w = nextInFocusChain(); w && w != this; w = w->nextInFocusChain())
+    if (!buttons.contains(w) && isAncestorOf(w) && !buttons.contains(w->parentWidget())) last = w;
+  QWidget* chain[] = {last, button(QWizard::NextButton), button(QWizard::FinishButton), button(QWizard::CancelButton),
+                      button(QWizard::BackButton), button(QWizard::HelpButton)};
+  for (std::size_t i = 1; i < std::size(chain); ++i)
+    if (chain[i - 1]) setTabOrder(chain[i - 1], chain[i]);
+}
+
+bool OperatorWizard::eventFilter(QObject* watched, QEvent* event) {
+  const auto t = event->type();
+  if ((t == QEvent::KeyRelease || t == QEvent::MouseButtonRelease) && autosave_enabled_ && currentId() > kStart) {
+    if (auto* w = qobject_cast<QWidget*>(watched); w && isAncestorOf(w)) autosave_timer_.start();
+  }
+  return QWizard::eventFilter(watched, event);
+}
+
 void OperatorWizard::done(int result) {
   QSettings().setValue("wizard/geometry", saveGeometry());
-  if (result == QDialog::Accepted) discardAutosave();
+  autosave_timer_.stop();
+  // QWizard::done validates (and so saves) the last page first; the wizard
+  // closes only if that worked.
   QWizard::done(result);
+  if (result == QDialog::Accepted && !isVisible()) {
+    discardAutosave();
+    if (!saved_text_.isEmpty()) ask(tr("Saved"), saved_text_, false);
+  }
 }
 
 }  // namespace auv::ui

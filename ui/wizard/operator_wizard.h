@@ -1,4 +1,5 @@
 #pragma once
+#include <QTimer>
 #include <QWizard>
 #include <functional>
 #include <memory>
@@ -54,8 +55,10 @@ class OperatorWizard : public QWizard {
   void setClock(std::function<TimePoint()> clock) { clock_ = std::move(clock); }
   TimePoint now() const { return clock_(); }
 
-  // Autosave of the unfinished session on every page change (off for demos).
+  // Autosave of the unfinished session on every page change and, debounced
+  // (autosaveDelayMs), after every edit (off for demos).
   void setAutosaveEnabled(bool on) { autosave_enabled_ = on; }
+  static constexpr int autosaveDelayMs = 700;
   void autosave();
   void discardAutosave();
   // Replaces the session with a saved one and walks forward to its page
@@ -65,7 +68,31 @@ class OperatorWizard : public QWizard {
   void showHelp();
   HelpDialog* helpDialog() const { return help_; }
 
+  // Messages that need the technician: a question (true = the first,
+  // affirmative answer) or, with question false, a note to acknowledge.
+  // Tests replace the default QMessageBox to read and answer them.
+  using Asker = std::function<bool(const QString& title, const QString& text, bool question)>;
+  void setAsker(Asker a) { asker_ = std::move(a); }
+  // For every wizard without its own asker (the test main answers for the
+  // technician and keeps the texts).
+  static void setDefaultAsker(Asker a);
+  bool ask(const QString& title, const QString& text, bool question);
+
+  // Finish: what the page saved ("configuration 02-01-01: weighing, ..."),
+  // confirmed to the technician when the wizard closes.
+  void reportSaved(const QString& what) { saved_text_ = what; }
+  // The history cannot be opened at Finish: asks whether to close anyway.
+  bool confirmCloseWithoutHistory();
+  // Anything entered beyond the start page and not yet saved.
+  bool hasUnsavedInput() const { return currentId() > kStart && saved_text_.isEmpty(); }
+
   void done(int result) override;
+  void reject() override;
+  bool validateCurrentPage() override;
+
+ protected:
+  void initializePage(int id) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   WizardState state_;
@@ -75,6 +102,10 @@ class OperatorWizard : public QWizard {
   std::function<TimePoint()> clock_;
   bool autosave_enabled_ = true;
   HelpDialog* help_ = nullptr;
+  Asker asker_;
+  QString saved_text_;
+  // Autosave shortly after the last key or click, so a crash loses nothing typed.
+  QTimer autosave_timer_;
 };
 
 }  // namespace auv::ui
