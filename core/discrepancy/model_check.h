@@ -13,6 +13,9 @@
 //   4. Each selected term must also improve the SIMULATION error on data not
 //      used to fit it (two halves of the dives/legs, each fitted on one half
 //      and scored on the other); only then is it accepted.
+//   The ballast state includes the model's calibration constants (hydrodynamic
+//   group scales, propeller torque) under their priors: fitted from step 1 on,
+//   reported under `calibration`, never as missing physics.
 //   5. Final joint fit (ballast state + accepted terms), uncertainties, RMS
 //      before/after per channel on fitted and held-out data, and where each
 //      residual and each accepted term concentrates (localisation.h).
@@ -49,7 +52,8 @@ struct ChannelRms {
 
 struct MissingPhysics {
   std::string id, unit;
-  double value = 0.0, sigma = 0.0;  // display unit
+  double value = 0.0, sigma = 0.0;  // display unit: what the vehicle has (profile_value + the fitted increment)
+  double profile_value = 0.0;       // what the profile assumed, display unit
   Channel channel = Channel::kDepth;   // simulation channel it improves most
   double rms_before = 0.0, rms_after = 0.0;  // held-out simulation RMS on `channel`, display unit
   std::string where;
@@ -70,6 +74,15 @@ struct CandidateReport {
   double nuisance_r2 = 0.0;  // share of its regressor the ballast state explains
 };
 
+// A calibration constant as fitted with the ballast state (check_model.h).
+struct CalibrationValue {
+  std::string id, unit, label;
+  double value = 0.0, sigma = 0.0;  // posterior, reported unit
+  double profile_value = 0.0, prior_sigma = 0.0;
+  bool identified = false;  // posterior sigma below half the prior's: the log, not the prior, says it
+  std::string finding;      // set when the log puts it far from the profile's value, in words
+};
+
 struct IdentifiabilityIssue {
   std::string a, b;  // term ids ("ballast_state" for the nuisance)
   double correlation = 0.0;
@@ -82,6 +95,7 @@ struct ModelCheckResult {
   int units = 0;
   double neff_ratio = 1.0;
   std::vector<MissingPhysics> missing_physics;  // best first
+  std::vector<CalibrationValue> calibration;    // constants the profile only assumes, fitted; never missing physics
   std::vector<CandidateReport> candidates;
   std::vector<IdentifiabilityIssue> identifiability;
   std::vector<std::string> stlsq_selected;      // SINDy-style comparison

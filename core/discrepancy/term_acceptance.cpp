@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -37,6 +38,10 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     for (std::size_t a : accepted) st.terms[a] = R.accepted[a];
     const HeldOut ho = scorer.score(trial, st);
     const double before = scorer.cost(hoCur), after = scorer.cost(ho);
+    if (std::getenv("AUV_DEBUG_HELDOUT"))
+      for (std::size_t ch = 0; ch < SC; ++ch)
+        std::printf("DEBUG %s %s: %.4g -> %.4g (ref %.4g)\n", std::string(lib[term].id).c_str(), channelName(simCh[ch]),
+                    hoCur.sim_sse[ch] / hoCur.sim_n[ch], ho.sim_sse[ch] / ho.sim_n[ch], scorer.reference(ch));
     if (!(after < before * (1.0 - o.min_sim_gain))) {
       std::snprintf(buf, sizeof buf, "improves the equation error but not the held-out simulation error (cost %.4g -> %.4g)",
                     before, after);
@@ -64,7 +69,7 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
       }
     }
     for (std::size_t k2 = 0; k2 < hoCur.prior_z2.size(); ++k2)
-      if (ho.prior_z2[k2] < hoCur.prior_z2[k2] && hoCur.prior_z2[k2] > 4.0)
+      if (s.priors[k2].measured && ho.prior_z2[k2] < hoCur.prior_z2[k2] && hoCur.prior_z2[k2] > 4.0)
         mp.evidence = "the flight data alone cannot separate it from " + R.nuisance_names[static_cast<std::size_t>(s.priors[k2].index)] +
                       "; the independent measurement of that (prior) does: without the term the fit is " +
                       std::to_string(static_cast<int>(std::lround(std::sqrt(hoCur.prior_z2[k2])))) + " sigma from it";

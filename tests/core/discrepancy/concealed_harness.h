@@ -38,7 +38,8 @@ inline CaseOutcome runConcealedCase(const std::string& label, const std::string&
     for (const MissingPhysics& mp : r.missing_physics) {
       if (mp.id == expected_id) {
         found = true;
-        o.rel_error.push_back(std::abs(mp.value - truth_display) / std::abs(truth_display));
+        // The reported value is the vehicle's (profile + effect); the truth here is the effect.
+        o.rel_error.push_back(std::abs(mp.value - mp.profile_value - truth_display) / std::abs(truth_display));
         if (mp.rms_after < mp.rms_before) ++o.sim_improved;
       } else {
         ++o.false_positives;

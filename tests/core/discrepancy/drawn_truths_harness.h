@@ -113,9 +113,21 @@ inline DrawnOutcome runDrawnCase(const Delphin2Nominal& d, const DrawnCase& c, c
       ++o.top1;
       if (std::abs(effectOf(r.missing_physics[0]) - c.truth) <= 0.3 * std::abs(c.truth)) ++o.within30;
     }
-    if (verbose)
+    if (verbose) {
       std::printf("    seed %-3llu %-70s found:%s\n", static_cast<unsigned long long>(seed), truth.describe().c_str(),
                   found.empty() ? " nothing" : found.c_str());
+      for (const CandidateReport& k : r.candidates)
+        if (k.id == c.expected)
+          std::printf("      %s alone %.3g +- %.2g (t %.1f, inclusion %.2f, ballast r2 %.3f): %s\n", k.id.c_str(), k.value,
+                      k.sigma, k.t_value, k.inclusion_probability, k.nuisance_r2, k.status.c_str());
+      std::string cal;
+      for (const CalibrationValue& k : r.calibration) {
+        char b[96];
+        std::snprintf(b, sizeof b, " %s %.3g+-%.2g%s", k.id.c_str(), k.value, k.sigma, k.identified ? "" : "(prior)");
+        cal += b;
+      }
+      std::printf("      calibration:%s\n", cal.c_str());
+    }
   }
   return o;
 }
