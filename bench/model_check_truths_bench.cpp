@@ -8,10 +8,11 @@
 // case and in total: top-1 right, value within 30 %, terms named on the
 // controls, and how often propeller_torque is reported as missing physics.
 // Targets: top-1 >= 90 %, 0 false terms on controls, propeller_torque never.
-// Usage: model_check_truths_bench [seeds per case, default 6] [-v]
+// Usage: model_check_truths_bench [seeds per case, default 6] [-v] [--case LABEL-PART]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "drawn_truths_harness.h"
 
@@ -19,9 +20,12 @@ int main(int argc, char** argv) {
   using namespace auv::discrepancy::test;
   int n = 6;
   bool verbose = false;
+  std::string only;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "-v") == 0)
       verbose = true;
+    else if (std::strcmp(argv[i], "--case") == 0 && i + 1 < argc)
+      only = argv[++i];
     else
       n = std::max(1, std::atoi(argv[i]));
   }
@@ -31,6 +35,7 @@ int main(int argc, char** argv) {
   const std::vector<DrawnCase> cases = drawnCases();
   for (std::size_t ci = 0; ci < cases.size(); ++ci) {
     const DrawnCase& c = cases[ci];
+    if (!only.empty() && c.label.find(only) == std::string::npos) continue;
     std::vector<std::uint64_t> seeds;  // a different drawn truth for every log
     for (int k = 0; k < n; ++k) seeds.push_back(100 * (ci + 1) + static_cast<std::uint64_t>(k));
     const DrawnOutcome o = runDrawnCase(d, c, seeds, verbose);

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -38,10 +37,6 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     for (std::size_t a : accepted) st.terms[a] = R.accepted[a];
     const HeldOut ho = scorer.score(trial, st);
     const double before = scorer.cost(hoCur), after = scorer.cost(ho);
-    if (std::getenv("AUV_DEBUG_HELDOUT"))
-      for (std::size_t ch = 0; ch < SC; ++ch)
-        std::printf("DEBUG %s %s: %.4g -> %.4g (ref %.4g)\n", std::string(lib[term].id).c_str(), channelName(simCh[ch]),
-                    hoCur.sim_sse[ch] / hoCur.sim_n[ch], ho.sim_sse[ch] / ho.sim_n[ch], scorer.reference(ch));
     if (!(after < before * (1.0 - o.min_sim_gain))) {
       std::snprintf(buf, sizeof buf, "improves the equation error but not the held-out simulation error (cost %.4g -> %.4g)",
                     before, after);

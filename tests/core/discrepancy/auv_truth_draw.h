@@ -11,7 +11,7 @@
 //   pitch damping M_q'                       x U(0.6, 1.4)
 //   roll damping K_p, K_|p|p                 x U(0.6, 1.4)
 //   surge drag X_uu                          x U(0.6, 1.4)
-//   stern-plane effectiveness Z/M_uud        x U(0.6, 1.2)
+//   stern-plane effectiveness X/Z/M_uud      x U(0.6, 1.2)
 //   propeller torque K_Q0                    x U(0, 2) (or exactly 0)
 //   ballast: net buoyancy U(0.1, 0.6) kg, CG x U(-3, 3) mm, CG y U(-0.6, 0.6) mm
 // M_|q|q is left at the profile's: the concealed quadratic pitch damping is
@@ -72,6 +72,7 @@ inline DrawnAuvTruth drawAuvTruth(const sim::SimVehicle& nominal, std::uint64_t 
   m.hydro.Kp_kgm2_per_s *= t.roll_damping_scale;
   m.hydro.Kpp_kgm2 *= t.roll_damping_scale;
   m.hydro.Xuu_kg_per_m *= t.drag_scale;
+  m.planes.X_uudd_per_deg2 *= t.plane_scale;
   m.planes.Z_uud_per_deg *= t.plane_scale;
   m.planes.M_uud_per_deg *= t.plane_scale;
   m.prop.KQ0 *= t.torque_scale;
