@@ -248,8 +248,8 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
 enum CalibrationIndex : int {
   kTorque = 3,
   kHeave,
-  kPitchMoment,
-  kMunkInside,
+  kCrossflow,
+  kNetMw,
   kPitchDamping,
   kRollDamping,
   kPlanes,
@@ -269,8 +269,8 @@ struct CalibrationSpec {
 constexpr CalibrationSpec kCalibration[] = {
     {kTorque, "propeller_torque", "propeller torque", "N*m/rpm^2"},
     {kHeave, "heave_derivatives", "heave derivatives Z_w, Z_q, Z_ww", "x profile"},
-    {kPitchMoment, "pitch_moment_derivatives", "pitch-moment derivatives M_w, M_ww", "x profile"},
-    {kMunkInside, "munk_moment_in_m_w", "share of the Munk moment already in the tabulated M_w", "fraction"},
+    {kNetMw, "net_pitch_moment_derivative", "net pitch-moment derivative M_w' with the Munk moment", "nondimensional"},
+    {kCrossflow, "crossflow_pitch_moment", "crossflow pitch moment M_|w|w", "x profile"},
     {kPitchDamping, "pitch_damping", "linear pitch damping M_q", "x profile"},
     {kRollDamping, "roll_damping", "roll damping K_p, K_|p|p", "x profile"},
     {kPlanes, "stern_plane_effectiveness", "stern-plane effectiveness Z_uud, M_uud", "x profile"},
@@ -294,16 +294,26 @@ double AuvCheckModel::munkPrime() const {
   return (model_.hydro.Xudot_kg - model_.hydro.Zwdot_kg) / (0.5 * kRhoRef * L * L * L);
 }
 
+// The linear u w pitch-moment coefficient the vehicle flies with. Whether a
+// tabulated M_w' holds the Munk moment or not changes even its sign, and a
+// log sees only the sum: one constant, prior sigma 30 % of M_w' plus half
+// the Munk moment (inside or on top are both within 2 sigma).
+double AuvCheckModel::profileNetMw() const { return model_.hydro.Mw_prime + munkPrime(); }
+double AuvCheckModel::netMwSigma() const {
+  return std::max(kGroupSigma * std::abs(model_.hydro.Mw_prime) + 0.5 * std::abs(munkPrime()), 1e-4);
+}
+
 sim::VehicleModel AuvCheckModel::calibratedModel(const Params& p) const {
   sim::VehicleModel m = model_;
   if (p.nuisance.size() < kNuisanceCount) return m;
-  const double z = p.nuisance[kHeave], mw = p.nuisance[kPitchMoment], mq = p.nuisance[kPitchDamping];
+  const double z = p.nuisance[kHeave], mq = p.nuisance[kPitchDamping];
   const double k = p.nuisance[kRollDamping], d = p.nuisance[kPlanes];
   m.hydro.Zw_prime *= z;
   m.hydro.Zq_prime *= z;
   m.hydro.Zww_kg_per_m *= z;
-  m.hydro.Mw_prime = mw * m.hydro.Mw_prime - p.nuisance[kMunkInside] * munkPrime();
-  m.hydro.Mww_kg *= mw;
+  // The simulator adds the Munk moment to M_w' itself (Coriolis terms).
+  m.hydro.Mw_prime = p.nuisance[kNetMw] - munkPrime();
+  m.hydro.Mww_kg *= p.nuisance[kCrossflow];
   m.hydro.Mq_prime *= mq;
   m.hydro.Kp_kgm2_per_s *= k;
   m.hydro.Kpp_kgm2 *= k;
@@ -329,8 +339,8 @@ std::vector<CalibrationConstant> AuvCheckModel::calibrationConstants() const {
     k.label = c.label;
     k.unit = c.unit;
     k.index = c.index;
-    k.profile_value = c.index == kTorque ? profileTorque() : c.index == kMunkInside ? 0.0 : 1.0;
-    k.prior_sigma = c.index == kTorque ? torqueSigma() : c.index == kMunkInside ? 1.0 : kGroupSigma;
+    k.profile_value = c.index == kTorque ? profileTorque() : c.index == kNetMw ? profileNetMw() : 1.0;
+    k.prior_sigma = c.index == kTorque ? torqueSigma() : c.index == kNetMw ? netMwSigma() : kGroupSigma;
     out.push_back(k);
   }
   return out;
@@ -366,7 +376,7 @@ Eigen::VectorXd AuvCheckModel::nuisanceStart() const {
   Eigen::VectorXd x = Eigen::VectorXd::Ones(kNuisanceCount);
   x.head(3).setZero();
   x[kTorque] = profileTorque();
-  x[kMunkInside] = 0.0;
+  x[kNetMw] = profileNetMw();
   return x;
 }
 
@@ -374,6 +384,7 @@ Eigen::VectorXd AuvCheckModel::nuisanceScale() const {
   Eigen::VectorXd x = Eigen::VectorXd::Constant(kNuisanceCount, 0.1);
   x.head(3) << 0.01, 1e-4, 1e-4;
   x[kTorque] = 0.1 * torqueSigma();
+  x[kNetMw] = 0.1 * netMwSigma();
   return x;
 }
 
@@ -381,7 +392,7 @@ Eigen::VectorXd AuvCheckModel::nuisanceLower() const {
   Eigen::VectorXd x = Eigen::VectorXd::Constant(kNuisanceCount, 0.1);
   x.head(3) << -0.05 * model_.body.mass_kg, -0.1, -0.1;
   x[kTorque] = profileTorque() - 20.0 * torqueSigma();
-  x[kMunkInside] = -2.0;
+  x[kNetMw] = profileNetMw() - 10.0 * netMwSigma();
   return x;
 }
 
@@ -389,7 +400,7 @@ Eigen::VectorXd AuvCheckModel::nuisanceUpper() const {
   Eigen::VectorXd x = Eigen::VectorXd::Constant(kNuisanceCount, 4.0);
   x.head(3) << 0.05 * model_.body.mass_kg, 0.1, 0.1;
   x[kTorque] = profileTorque() + 20.0 * torqueSigma();
-  x[kMunkInside] = 3.0;
+  x[kNetMw] = profileNetMw() + 10.0 * netMwSigma();
   return x;
 }
 

@@ -21,13 +21,14 @@
 // Calibration constants, fitted with it under priors (issue 11; the profile's
 // hydrodynamics are estimates known to perhaps 30-50 %): the propeller
 // reaction torque (prior 0 +- the profile's), scales of the heave derivatives
-// (Z_w', Z_q', Z_ww), the pitch-moment derivatives (M_w', M_ww), the linear
-// pitch damping (M_q'), the roll damping (K_p, K_|p|p) and the stern-plane
+// (Z_w', Z_q', Z_ww), the crossflow pitch moment (M_ww), the linear pitch
+// damping (M_q'), the roll damping (K_p, K_|p|p) and the stern-plane
 // effectiveness (X/Z/M_uud) and the surge drag (X_u, X_uu) (prior 1 +- 0.3
-// each; the drag from the surge equation), and how much of the Munk
-// moment the tabulated M_w' already holds (0 = none, as the simulator
-// assumes; prior 0 +- 1). M_|q|q is not among them: an unmodelled quadratic
-// pitch damping is a library term (quadratic_pitch_damping).
+// each; the drag from the surge equation), and the net linear pitch-moment
+// derivative M_w' + Munk' (whether the tabulated M_w' holds the Munk moment
+// is unknown and a log sees only the sum; prior sigma 30 % of M_w' plus half
+// the Munk term). M_|q|q is not among them: an unmodelled quadratic pitch
+// damping is a library term (quadratic_pitch_damping).
 #include <optional>
 #include <string>
 #include <vector>
@@ -105,6 +106,8 @@ class AuvCheckModel final : public CheckModel {
   TermValues total(const Params& p) const;
   double torqueSigma() const;  // prior sigma of the propeller torque
   double munkPrime() const;
+  double profileNetMw() const;
+  double netMwSigma() const;
 
   MissionLog log_;  // the channels the replay needs (a copy: the model outlives the caller's log)
   sim::VehicleModel model_;

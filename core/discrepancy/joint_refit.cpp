@@ -19,7 +19,7 @@ std::string calibrationWords(const CalibrationValue& c) {
     std::snprintf(b, sizeof b, "%s %.3f +- %.3f N m at 100 rpm; the profile assumed %.3f", c.label.c_str(), k * c.value,
                   k * c.sigma, k * c.profile_value);
   } else {
-    std::snprintf(b, sizeof b, "%s %.2f +- %.2f %s; the profile assumed %.2f", c.label.c_str(), c.value, c.sigma,
+    std::snprintf(b, sizeof b, "%s %.3g +- %.2g %s; the profile assumed %.3g", c.label.c_str(), c.value, c.sigma,
                   c.unit.c_str(), c.profile_value);
   }
   return b;

@@ -64,17 +64,17 @@ void writeCalibration(nlohmann::json& out, const ModelCheckResult& r, const std:
     scaleFields(out["hydrodynamics"], {"Zw_prime", "Zq_prime", "Zww_kg_per_m"}, c->value);
     record(*c, "hydrodynamics.Zw_prime, Zq_prime, Zww_kg_per_m");
   }
-  const CalibrationValue* mw = calibrationOf(r, "pitch_moment_derivatives");
-  const CalibrationValue* munk = calibrationOf(r, "munk_moment_in_m_w");
-  if ((mw || munk) && hydro) {
+  if (const CalibrationValue* c = calibrationOf(r, "net_pitch_moment_derivative"); c && hydro) {
+    // The simulator adds the Munk moment (X_udot - Z_wdot) u w to M_w' itself.
     nlohmann::json& h = out["hydrodynamics"];
     const double L = h.value("reference_length_m", numberAt(out, "hull", "length_m", 1.0));
     const double munkPrime = (h.value("Xudot_kg", 0.0) - h.value("Zwdot_kg", 0.0)) / (0.5 * 1025.0 * L * L * L);
-    const double s = mw ? mw->value : 1.0, f = munk ? munk->value : 0.0;
-    h["Mw_prime"] = s * h.value("Mw_prime", 0.0) - f * munkPrime;
-    scaleFields(h, {"Mww_kg"}, s);
-    if (mw) record(*mw, "hydrodynamics.Mw_prime, Mww_kg");
-    if (munk) record(*munk, "hydrodynamics.Mw_prime");
+    h["Mw_prime"] = c->value - munkPrime;
+    record(*c, "hydrodynamics.Mw_prime");
+  }
+  if (const CalibrationValue* c = calibrationOf(r, "crossflow_pitch_moment"); c && hydro) {
+    scaleFields(out["hydrodynamics"], {"Mww_kg"}, c->value);
+    record(*c, "hydrodynamics.Mww_kg");
   }
   if (const CalibrationValue* c = calibrationOf(r, "surge_drag"); c && hydro) {
     scaleFields(out["hydrodynamics"], {"Xu_kg_per_s", "Xuu_kg_per_m"}, c->value);

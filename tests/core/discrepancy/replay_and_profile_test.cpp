@@ -214,7 +214,9 @@ TEST(ProfileUpdate, CalibratedConstantsGoIntoACompleteProfile) {
   };
   cal("propeller_torque", 0.25 * perKQ * p.KQ0, perKQ * p.KQ0, true);  // a quarter of the assumed torque
   cal("heave_derivatives", 1.3, 1.0, true);
-  cal("munk_moment_in_m_w", 1.0, 0.0, true);
+  // Munk inside the tabulated M_w: the net derivative is M_w' alone.
+  const double L = 5.23, munk = (-47.0 + 1490.0) / (0.5 * 1025.0 * L * L * L);
+  cal("net_pitch_moment_derivative", -4.5e-3, -4.5e-3 + munk, true);
   cal("stern_plane_effectiveness", 0.7, 1.0, false);  // stayed at its prior: not written
   const nlohmann::json out = profileWithAcceptedTerms(profileToJson(v), v, r, "survey.csv");
   EXPECT_EQ(out["model_check"]["calibrated"].size(), 3u);
@@ -224,8 +226,7 @@ TEST(ProfileUpdate, CalibratedConstantsGoIntoACompleteProfile) {
   EXPECT_NEAR(s.model.prop.KQ0, 0.25 * p.KQ0, 1e-12);
   EXPECT_NEAR(s.model.hydro.Zw_prime, 1.3 * nominal.model.hydro.Zw_prime, 1e-15);
   EXPECT_NEAR(s.model.hydro.Zww_kg_per_m, 1.3 * nominal.model.hydro.Zww_kg_per_m, 1e-9);
-  // Munk inside: M_w' less (X_udot - Z_wdot) / (0.5 rho L^3), from the companion's numbers.
-  const double L = 5.23, munk = (-47.0 + 1490.0) / (0.5 * 1025.0 * L * L * L);
+  // The simulator's M_w' is the net less (X_udot - Z_wdot) / (0.5 rho L^3), from the companion's numbers.
   EXPECT_NEAR(s.model.hydro.Mw_prime, -4.5e-3 - munk, 1e-12);
   EXPECT_EQ(s.model.planes.M_uud_per_deg, nominal.model.planes.M_uud_per_deg);
   // Load -> write -> load of the written profile: the same vehicle, hydrodynamics included.
