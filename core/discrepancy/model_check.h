@@ -34,6 +34,12 @@ struct ModelCheckOptions {
   int bootstrap_replicates = 60;
   double min_inclusion = 0.6;    // bootstrap inclusion probability to go on to the simulation check
   double min_sim_gain = 0.01;    // relative drop of the held-out simulation cost to accept
+  // ... or, when a calibrated constant already mimics the term in simulation
+  // (a calibrated linear pitch damping flies like an extra quadratic one),
+  // a held-out simulation cost no worse than this and a relative drop of the
+  // held-out equation error (weighted, the other half of the units) of at least min_eq_gain.
+  double max_sim_loss = 0.06;
+  double min_eq_gain = 0.05;
   double collinear_threshold = 0.95;  // reported as "cannot be told apart"
   double degenerate_r2 = 0.995;       // share of a regressor the ballast state explains beyond which the term is not tried
   double stlsq_threshold = 0.5;  // in units of each term's typical value (comparison only)

@@ -47,6 +47,9 @@ inline CaseOutcome runConcealedCase(const std::string& label, const std::string&
       }
     }
     o.detected += found;
+    if (!found && !expected_id.empty())
+      for (const CandidateReport& c : r.candidates)
+        if (c.id == expected_id) std::printf("    seed %llu: %s %s\n", static_cast<unsigned long long>(seed), c.id.c_str(), c.status.c_str());
   }
   double maxErr = 0.0, meanErr = 0.0;
   for (double e : o.rel_error) {
