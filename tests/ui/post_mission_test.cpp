@@ -405,7 +405,7 @@ TEST_F(PostMission, DelphinModelCheckCalibratesThePropellerTorque) {
   // fitted with the ballast state, never missing physics (this test found it
   // in the terms table before). The demo's truth: K_Q0 0.0115 against the
   // profile's 0.0075, i.e. 53 % more torque.
-  for (const auto& m : mc.missing_physics) EXPECT_NE(m.id, "propeller_torque");
+  for (const auto& term : mc.missing_physics) EXPECT_NE(term.id, "propeller_torque");
   auto* terms = find<QTableWidget>(*wiz, "terms");
   for (int row = 0; row < terms->rowCount(); ++row) EXPECT_NE(terms->item(row, 0)->text(), "propeller_torque");
   const auto torque = std::find_if(mc.calibration.begin(), mc.calibration.end(),
