@@ -28,6 +28,7 @@
 #include "resource_paths.h"
 #include "target_flags.h"
 #include "vehicle/json_reader.h"
+#include "vehicle/profile_writer.h"
 #include "vehicle/vehicle_catalog.h"
 
 namespace auv::cli {
@@ -107,10 +108,13 @@ int runModelCheck(const ModelCheckOpts& o) {
 
   if (o.accept) {
     const std::string out = o.out_profile.empty() ? v.id + ".model-check.json" : o.out_profile;
-    if (mc.missing_physics.empty()) {
+    const bool anything = !mc.missing_physics.empty() || discrepancy::hasCalibrationToWrite(mc);
+    if (!anything) {
       j["model_check"]["profile_written"] = nullptr;
     } else {
-      const nlohmann::json doc = JsonReader::parseFile(v.file);
+      // The whole vehicle, companion sections (e.g. HUGIN's hydrodynamics
+      // from resources/sim) included: the copy is read on its own later.
+      const nlohmann::json doc = profileToJson(v);
       const nlohmann::json written = discrepancy::profileWithAcceptedTerms(doc, v, mc, logName);
       writeJson(written, out);
       j["model_check"]["profile_written"] = out;
@@ -124,6 +128,7 @@ int runModelCheck(const ModelCheckOpts& o) {
         ModelTerms m;
         m.at = nowUtc();
         m.model = {{"log", logName}, {"accepted", written["model_check"]["accepted"]}, {"profile", written}};
+        if (written["model_check"].contains("calibrated")) m.model["calibrated"] = written["model_check"]["calibrated"];
         store.addModelTerms(o.config, m);
         j["model_check"]["history_config"] = o.config;
       }
@@ -143,10 +148,11 @@ int runModelCheck(const ModelCheckOpts& o) {
       if (j["recommendation"].is_object()) std::cout << gliderPlanText(j["recommendation"]);
     }
     if (o.accept) {
-      if (mc.missing_physics.empty())
+      if (j["model_check"]["profile_written"].is_null())
         std::cout << "Nothing accepted: no profile written.\n";
       else
-        std::cout << "Accepted terms written to " << j["model_check"]["profile_written"].get<std::string>()
+        std::cout << "Accepted terms and identified calibration constants written to "
+                  << j["model_check"]["profile_written"].get<std::string>()
                   << " (use it as --vehicle to fly and analyse with them).\n";
     }
   }
@@ -168,7 +174,9 @@ Command addModelCheckCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--cache-dir", o->cache_dir, kCacheDirHelp);
   cmd->add_option("--json", o->json, "Write the JSON report (analysis + missing_physics) here ('-' = stdout instead of text)");
-  cmd->add_flag("--accept", o->accept, "Write the accepted terms into a copy of the vehicle profile");
+  cmd->add_flag("--accept", o->accept,
+                "Write the accepted terms and the identified calibration constants into a complete copy of the vehicle "
+                "profile (hydrodynamics included)");
   cmd->add_option("--config", o->config,
                   "With --accept: also save the accepted terms as this configuration's vehicle model in the history");
   cmd->add_option("--history", o->history, "History database (default: the user's, as for 'plan')");

@@ -252,7 +252,7 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
   ref_rho_ = sr / n;
   ref_T_ = sT / n;
   ref_p_ = sp / n;
-  eq_ = {Channel::kVerticalForce, Channel::kPitchMoment, Channel::kRollMoment};
+  eq_ = {Channel::kVerticalForce, Channel::kPitchMoment, Channel::kRollMoment, Channel::kSurgeForce};
   if (has_depth_ref_) eq_.push_back(Channel::kDepth);
   if (hasChannel(log, "temperature", 10) && hasChannel(log, "salinity", 10)) {
     water_ = sim::waterColumnFromLog(log, 1.0, latitude_);
@@ -262,9 +262,123 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
   }
 }
 
+// Calibration constants in the nuisance vector, after the ballast state.
+enum CalibrationIndex : int {
+  kTorque = 3,
+  kHeave,
+  kCrossflow,
+  kNetMw,
+  kPitchDamping,
+  kRollDamping,
+  kPlanes,
+  kDrag,
+  kNuisanceCount
+};
+
+namespace {
+
+struct CalibrationSpec {
+  CalibrationIndex index;
+  const char* id;
+  const char* label;
+  const char* unit;
+};
+// Scale groups: value = the vehicle's derivatives as a multiple of the profile's.
+constexpr CalibrationSpec kCalibration[] = {
+    {kTorque, "propeller_torque", "propeller torque", "N*m/rpm^2"},
+    {kHeave, "heave_derivatives", "heave derivatives Z_w, Z_q, Z_ww", "x profile"},
+    {kNetMw, "net_pitch_moment_derivative", "net pitch-moment derivative M_w' with the Munk moment", "nondimensional"},
+    {kCrossflow, "crossflow_pitch_moment", "crossflow pitch moment M_|w|w", "x profile"},
+    {kPitchDamping, "pitch_damping", "linear pitch damping M_q", "x profile"},
+    {kRollDamping, "roll_damping", "roll damping K_p, K_|p|p", "x profile"},
+    {kPlanes, "stern_plane_effectiveness", "stern-plane effectiveness Z_uud, M_uud", "x profile"},
+    {kDrag, "surge_drag", "surge drag X_u, X_uu", "x profile"},
+};
+constexpr double kGroupSigma = 0.3;  // default prior sigma of a hydrodynamic group (issue 11)
+
+}  // namespace
+
+double AuvCheckModel::profileTorque() const {
+  const sim::Propeller& p = model_.prop;
+  const std::size_t k = *findTerm("propeller_torque");
+  return p.torque_sign * p.KQ0 * kRhoRef * std::pow(p.diameter_m, 5) / 3600.0 + baseline_[k];
+}
+
+double AuvCheckModel::torqueSigma() const { return std::max(std::abs(profileTorque()), termLibrary()[*findTerm("propeller_torque")].typical); }
+
+// Munk moment (X_udot - Z_wdot) u w as a nondimensional M_w' (rho 1025).
+double AuvCheckModel::munkPrime() const {
+  const double L = model_.body.reference_length_m;
+  return (model_.hydro.Xudot_kg - model_.hydro.Zwdot_kg) / (0.5 * kRhoRef * L * L * L);
+}
+
+// The linear u w pitch-moment coefficient the vehicle flies with. Whether a
+// tabulated M_w' holds the Munk moment or not changes even its sign, and a
+// log sees only the sum: one constant, prior sigma 30 % of M_w' plus half
+// the Munk moment (inside or on top are both within 2 sigma).
+double AuvCheckModel::profileNetMw() const { return model_.hydro.Mw_prime + munkPrime(); }
+double AuvCheckModel::netMwSigma() const {
+  return std::max(kGroupSigma * std::abs(model_.hydro.Mw_prime) + 0.5 * std::abs(munkPrime()), 1e-4);
+}
+
+sim::VehicleModel AuvCheckModel::calibratedModel(const Params& p) const {
+  sim::VehicleModel m = model_;
+  if (p.nuisance.size() < kNuisanceCount) return m;
+  const double z = p.nuisance[kHeave], mq = p.nuisance[kPitchDamping];
+  const double k = p.nuisance[kRollDamping], d = p.nuisance[kPlanes];
+  m.hydro.Zw_prime *= z;
+  m.hydro.Zq_prime *= z;
+  m.hydro.Zww_kg_per_m *= z;
+  // The simulator adds the Munk moment to M_w' itself (Coriolis terms).
+  m.hydro.Mw_prime = p.nuisance[kNetMw] - munkPrime();
+  m.hydro.Mww_kg *= p.nuisance[kCrossflow];
+  m.hydro.Mq_prime *= mq;
+  m.hydro.Kp_kgm2_per_s *= k;
+  m.hydro.Kpp_kgm2 *= k;
+  m.planes.X_uudd_per_deg2 *= d;
+  m.planes.Z_uud_per_deg *= d;
+  m.planes.M_uud_per_deg *= d;
+  m.hydro.Xu_kg_per_s *= p.nuisance[kDrag];
+  m.hydro.Xuu_kg_per_m *= p.nuisance[kDrag];
+  return m;
+}
+
+std::vector<std::string> AuvCheckModel::nuisanceNames() const {
+  std::vector<std::string> n = {"net_buoyancy_kg", "cg_x_shift_m", "cg_y_shift_m"};
+  for (const CalibrationSpec& c : kCalibration) n.emplace_back(c.id);
+  return n;
+}
+
+std::vector<CalibrationConstant> AuvCheckModel::calibrationConstants() const {
+  std::vector<CalibrationConstant> out;
+  for (const CalibrationSpec& c : kCalibration) {
+    CalibrationConstant k;
+    k.id = c.id;
+    k.label = c.label;
+    k.unit = c.unit;
+    k.index = c.index;
+    k.profile_value = c.index == kTorque ? profileTorque() : c.index == kNetMw ? profileNetMw() : 1.0;
+    k.prior_sigma = c.index == kTorque ? torqueSigma() : c.index == kNetMw ? netMwSigma() : kGroupSigma;
+    out.push_back(k);
+  }
+  return out;
+}
+
+double AuvCheckModel::profileTermValue(std::size_t term) const {
+  const PhysicsTerm& t = termLibrary()[term];
+  double v = baseline_[term] * t.display_scale;
+  if (t.id == "hull_compressibility") v += model_.body.hull.compressibility_per_dbar;
+  if (t.id == "thermal_expansion") v += model_.body.hull.thermal_expansion_per_degC;
+  if (t.id == "quadratic_pitch_damping") v += 1.0;  // the vehicle's M_|q|q as a multiple of the profile's
+  return v;
+}
+
 TermValues AuvCheckModel::total(const Params& p) const {
   TermValues t = baseline_;
   for (std::size_t k = 0; k < kTermCount; ++k) t[k] += p.terms[k];
+  // The calibrated propeller torque replaces the profile's: the model's own
+  // K_Q0 is in the dynamics, the difference goes through the library term.
+  if (p.nuisance.size() >= kNuisanceCount) t[*findTerm("propeller_torque")] += p.nuisance[kTorque] - profileTorque();
   return t;
 }
 
@@ -276,14 +390,46 @@ sim::VehicleLoading AuvCheckModel::loading(const Params& p) const {
   return l;
 }
 
-Eigen::VectorXd AuvCheckModel::nuisanceStart() const { return Eigen::Vector3d::Zero(); }
-Eigen::VectorXd AuvCheckModel::nuisanceScale() const { return Eigen::Vector3d(0.01, 1e-4, 1e-4); }
-Eigen::VectorXd AuvCheckModel::nuisanceLower() const { return Eigen::Vector3d(-0.05 * model_.body.mass_kg, -0.1, -0.1); }
-Eigen::VectorXd AuvCheckModel::nuisanceUpper() const { return Eigen::Vector3d(0.05 * model_.body.mass_kg, 0.1, 0.1); }
+Eigen::VectorXd AuvCheckModel::nuisanceStart() const {
+  Eigen::VectorXd x = Eigen::VectorXd::Ones(kNuisanceCount);
+  x.head(3).setZero();
+  x[kTorque] = profileTorque();
+  x[kNetMw] = profileNetMw();
+  return x;
+}
+
+Eigen::VectorXd AuvCheckModel::nuisanceScale() const {
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(kNuisanceCount, 0.1);
+  x.head(3) << 0.01, 1e-4, 1e-4;
+  x[kTorque] = 0.1 * torqueSigma();
+  x[kNetMw] = 0.1 * netMwSigma();
+  return x;
+}
+
+Eigen::VectorXd AuvCheckModel::nuisanceLower() const {
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(kNuisanceCount, 0.1);
+  x.head(3) << -0.05 * model_.body.mass_kg, -0.1, -0.1;
+  x[kTorque] = profileTorque() - 20.0 * torqueSigma();
+  x[kNetMw] = profileNetMw() - 10.0 * netMwSigma();
+  return x;
+}
+
+Eigen::VectorXd AuvCheckModel::nuisanceUpper() const {
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(kNuisanceCount, 4.0);
+  x.head(3) << 0.05 * model_.body.mass_kg, 0.1, 0.1;
+  x[kTorque] = profileTorque() + 20.0 * torqueSigma();
+  x[kNetMw] = profileNetMw() + 10.0 * netMwSigma();
+  return x;
+}
 
 std::vector<NuisancePrior> AuvCheckModel::priors() const {
-  if (!opt_.cg_y_sigma_m) return {};
-  return {{2, 0.0, *opt_.cg_y_sigma_m}};
+  std::vector<NuisancePrior> p;
+  if (opt_.cg_y_sigma_m) p.push_back({2, 0.0, *opt_.cg_y_sigma_m, true});
+  // Calibration constants: propeller torque 0 +- the profile's (it may be
+  // anything from none to twice the assumed), the rest at the profile's.
+  for (const CalibrationConstant& c : calibrationConstants())
+    p.push_back({c.index, c.id == "propeller_torque" ? 0.0 : c.profile_value, c.prior_sigma, false});
+  return p;
 }
 
 bool AuvCheckModel::applicable(std::size_t term) const {
@@ -291,7 +437,7 @@ bool AuvCheckModel::applicable(std::size_t term) const {
   if (!(t.families & kAuvFamily)) return false;
   if (t.id == "depth_sensor_offset") return has_depth_ref_;
   if (t.id == "quadratic_pitch_damping") return model_.hydro.Mqq_kgm2 != 0.0;
-  if (t.id == "propeller_torque") return model_.prop.diameter_m > 0.0;
+  if (t.id == "propeller_torque") return false;  // a calibration constant of the AUV, not missing physics
   return true;
 }
 
@@ -299,7 +445,8 @@ void AuvCheckModel::equationError(const Params& prm, std::span<const std::uint32
   const TermValues tv = total(prm);
   const sim::VehicleLoading L = loading(prm);
   const sim::FlownMass fm = sim::flownMass(model_, L.extra_masses, std::nullopt, L.error, 0.0);
-  sim::Dynamics dyn(model_);
+  const sim::VehicleModel cal = calibratedModel(prm);
+  sim::Dynamics dyn(cal);
   dyn.setMassProperties(fm.mass_kg, fm.r_g_m, fm.extra_Ixx, fm.extra_Iyy);
   const Eigen::Vector4d M = dyn.massDiagonal();
   const std::size_t C = eq_.size();
@@ -311,8 +458,9 @@ void AuvCheckModel::equationError(const Params& prm, std::span<const std::uint32
   std::vector<char> need(G, 0);
   for (std::uint32_t r : rows)
     for (std::size_t j = rowGrid_[r] - K; j <= rowGrid_[r] + K; ++j) need[j] = 1;
-  // Velocities (heave, pitch, roll) and model forces at each needed point.
-  std::vector<double> vel(3 * G, 0.0), force(3 * G, 0.0), depthOffset(G, 0.0);
+  // Velocities (heave, pitch, roll, surge) and model forces at each needed point.
+  constexpr std::size_t D = 4;
+  std::vector<double> vel(D * G, 0.0), force(D * G, 0.0), depthOffset(G, 0.0);
   for (std::size_t j = 0; j < G; ++j) {
     if (!need[j]) continue;
     const GridState& g = grid_[j];
@@ -355,25 +503,28 @@ void AuvCheckModel::equationError(const Params& prm, std::span<const std::uint32
     sim::StateVector s;
     s << g.u, w, q, p, 0.0, 0.0, th, ph;
     const sim::StateVector d = dyn.derivative(s);
-    vel[3 * j] = w;
-    vel[3 * j + 1] = q;
-    vel[3 * j + 2] = p;
-    force[3 * j] = M[1] * d[sim::kW];
-    force[3 * j + 1] = M[2] * d[sim::kQ];
-    force[3 * j + 2] = M[3] * d[sim::kP];
+    vel[D * j] = w;
+    vel[D * j + 1] = q;
+    vel[D * j + 2] = p;
+    vel[D * j + 3] = g.u;
+    force[D * j] = M[1] * d[sim::kW];
+    force[D * j + 1] = M[2] * d[sim::kQ];
+    force[D * j + 2] = M[3] * d[sim::kP];
+    force[D * j + 3] = M[0] * d[sim::kU];
   }
   const double span = 2.0 * static_cast<double>(K) * dt_;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const std::size_t i = rows[r];
     const std::size_t g = rowGrid_[i];
     double* o = out + r * C;
-    for (std::size_t c = 0; c < 3; ++c) {
+    constexpr Eigen::Index kMassIndex[D] = {1, 2, 3, 0};  // heave, pitch, roll, surge in M
+    for (std::size_t c = 0; c < D; ++c) {
       // Momentum change over the window against the impulse of the model's force.
       double impulse = 0.0;
-      for (std::size_t j = g - K; j < g + K; ++j) impulse += 0.5 * (force[3 * j + c] + force[3 * (j + 1) + c]) * dt_;
-      o[c] = (M[static_cast<Eigen::Index>(c) + 1] * (vel[3 * (g + K) + c] - vel[3 * (g - K) + c]) - impulse) / span;
+      for (std::size_t j = g - K; j < g + K; ++j) impulse += 0.5 * (force[D * j + c] + force[D * (j + 1) + c]) * dt_;
+      o[c] = (M[kMassIndex[c]] * (vel[D * (g + K) + c] - vel[D * (g - K) + c]) - impulse) / span;
     }
-    if (C == 4) o[3] = depthSensor_[i] - (zRef_[i] + depthOffset[g]);
+    if (C == D + 1) o[D] = depthSensor_[i] - (zRef_[i] + depthOffset[g]);
   }
 }
 
@@ -385,7 +536,7 @@ void AuvCheckModel::simulationError(const Params& p, std::vector<double>& out) c
   o.dt_s = opt_.replay_dt_s;
   o.loading = loading(p);
   o.mass_reference_time_s = t_ref_;
-  const TermReplayTrace tr = termReplay(model_, autopilot_, water_, log_, simAdjustment(total(p)), table_.t, o);
+  const TermReplayTrace tr = termReplay(calibratedModel(p), autopilot_, water_, log_, simAdjustment(total(p)), table_.t, o);
   const std::size_t N = rowGrid_.size();
   out.assign(5 * N, kNaN);
   const double t0 = log_.time.front() + opt_.settle_s;

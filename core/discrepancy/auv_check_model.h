@@ -4,7 +4,7 @@
 // recorded states.
 //  - Equation error per sample, in integral form: over a window of +-2 s the
 //    change of heave, pitch and roll velocity times the mass/inertia, minus
-//    the integral of the model's force/moment (heave, pitch, roll). The
+//    the integral of the model's force/moment (heave, pitch, roll, surge). The
 //    velocities come from short local fits of the logged states
 //    (savitzky_golay.h): w from the depth rate, speed and attitude, q and p
 //    from the attitude rates. Integrating the model instead of
@@ -18,6 +18,17 @@
 //    velocity.
 // Ballast state: net buoyancy (a mass at the CG) and CG x/y shifts relative to
 // the profile, always fitted; the CG y may carry a prior from a roll test.
+// Calibration constants, fitted with it under priors (issue 11; the profile's
+// hydrodynamics are estimates known to perhaps 30-50 %): the propeller
+// reaction torque (prior 0 +- the profile's), scales of the heave derivatives
+// (Z_w', Z_q', Z_ww), the crossflow pitch moment (M_ww), the linear pitch
+// damping (M_q'), the roll damping (K_p, K_|p|p) and the stern-plane
+// effectiveness (X/Z/M_uud) and the surge drag (X_u, X_uu) (prior 1 +- 0.3
+// each; the drag from the surge equation), and the net linear pitch-moment
+// derivative M_w' + Munk' (whether the tabulated M_w' holds the Munk moment
+// is unknown and a log sees only the sum; prior sigma 30 % of M_w' plus half
+// the Munk term). M_|q|q is not among them: an unmodelled quadratic pitch
+// damping is a library term (quadratic_pitch_damping).
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,12 +67,14 @@ class AuvCheckModel final : public CheckModel {
 
   unsigned family() const override { return kAuvFamily; }
   const SampleTable& samples() const override { return table_; }
-  std::vector<std::string> nuisanceNames() const override { return {"net_buoyancy_kg", "cg_x_shift_m", "cg_y_shift_m"}; }
+  std::vector<std::string> nuisanceNames() const override;
   Eigen::VectorXd nuisanceStart() const override;
   Eigen::VectorXd nuisanceScale() const override;
   Eigen::VectorXd nuisanceLower() const override;
   Eigen::VectorXd nuisanceUpper() const override;
   std::vector<NuisancePrior> priors() const override;
+  std::vector<CalibrationConstant> calibrationConstants() const override;
+  double profileTermValue(std::size_t term) const override;
   bool applicable(std::size_t term) const override;
   std::vector<Channel> equationChannels() const override { return eq_; }
   void equationError(const Params& p, std::span<const std::uint32_t> rows, double* out) const override;
@@ -78,6 +91,10 @@ class AuvCheckModel final : public CheckModel {
 
   const TermValues& baseline() const { return baseline_; }
   sim::VehicleLoading loading(const Params& p) const;
+  // The model with the calibration constants of `p` applied.
+  sim::VehicleModel calibratedModel(const Params& p) const;
+  // The profile model's propeller reaction torque per rpm^2 at bollard pull (rho 1025), signed.
+  double profileTorque() const;
 
  private:
   // Smoothed states on the uniform grid (valid = every field finite).
@@ -87,6 +104,10 @@ class AuvCheckModel final : public CheckModel {
     double rpm, elev_rad, th_front, th_aft, rho, T, p;
   };
   TermValues total(const Params& p) const;
+  double torqueSigma() const;  // prior sigma of the propeller torque
+  double munkPrime() const;
+  double profileNetMw() const;
+  double netMwSigma() const;
 
   MissionLog log_;  // the channels the replay needs (a copy: the model outlives the caller's log)
   sim::VehicleModel model_;

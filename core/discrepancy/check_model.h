@@ -38,10 +38,28 @@ struct Params {
 };
 
 // A Gaussian prior on one nuisance parameter (e.g. CG y from a roll test).
+// `measured`: an independent measurement the flight data must reproduce (the
+// held-out check scores the fit against it); false for the soft priors of
+// calibration constants, which only regularise.
 struct NuisancePrior {
   int index = -1;
   double mean = 0.0;
   double sigma = std::numeric_limits<double>::infinity();
+  bool measured = true;
+};
+
+// A calibration constant: a nuisance parameter (after the ballast state) that
+// stands for a constant the profile only assumes (a hydrodynamic group scale,
+// the propeller torque). Fitted with the ballast state under its prior, never
+// reported as missing physics. Values in the reported unit are
+// nuisance[index] * display_scale.
+struct CalibrationConstant {
+  std::string id, unit;
+  std::string label;           // for people: "propeller torque"
+  int index = -1;              // into the nuisance vector
+  double display_scale = 1.0;  // nuisance -> reported unit
+  double profile_value = 0.0;  // reported unit
+  double prior_sigma = 0.0;    // reported unit
 };
 
 class CheckModel {
@@ -57,6 +75,11 @@ class CheckModel {
   virtual Eigen::VectorXd nuisanceLower() const = 0;
   virtual Eigen::VectorXd nuisanceUpper() const = 0;
   virtual std::vector<NuisancePrior> priors() const { return {}; }
+  virtual std::vector<CalibrationConstant> calibrationConstants() const { return {}; }
+  // The profile's value of a library term in its display unit (a found
+  // term's reported value is this plus the fitted increment: what the
+  // vehicle has, not a correction).
+  virtual double profileTermValue(std::size_t /*term*/) const { return 0.0; }
 
   // Whether this log can show the term at all (channels present, vehicle kind).
   virtual bool applicable(std::size_t term) const = 0;

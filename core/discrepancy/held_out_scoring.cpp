@@ -82,7 +82,10 @@ double HeldOutScorer::cost(const HeldOut& h) const {
   double c = 0.0;
   for (std::size_t k = 0; k < simCh_.size(); ++k)
     if (h.sim_n[k] > 0) c += h.sim_sse[k] / h.sim_n[k] / simRef_[k];
-  for (std::size_t k = 0; k < h.prior_z2.size(); ++k) c += std::max(1.0, h.prior_z2[k]) / std::max(1.0, base_.prior_z2[k]);
+  // Only independent measurements are held-out data; a calibration
+  // constant's soft prior is not (a term must not win by pulling it back).
+  for (std::size_t k = 0; k < h.prior_z2.size(); ++k)
+    if (s_.priors[k].measured) c += std::max(1.0, h.prior_z2[k]) / std::max(1.0, base_.prior_z2[k]);
   return c;
 }
 

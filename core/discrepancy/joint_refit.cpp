@@ -2,10 +2,50 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "common/units.h"
 
 namespace auv::discrepancy::detail {
+
+namespace {
+
+// "propeller torque 0.000 +- 0.020 N m at 100 rpm; the profile assumed 0.052"
+std::string calibrationWords(const CalibrationValue& c) {
+  char b[256];
+  if (c.id == "propeller_torque") {
+    const double k = 1e4;  // N m/rpm^2 -> N m at 100 rpm (bollard pull)
+    std::snprintf(b, sizeof b, "%s %.3f +- %.3f N m at 100 rpm; the profile assumed %.3f", c.label.c_str(), k * c.value,
+                  k * c.sigma, k * c.profile_value);
+  } else {
+    std::snprintf(b, sizeof b, "%s %.3g +- %.2g %s; the profile assumed %.3g", c.label.c_str(), c.value, c.sigma,
+                  c.unit.c_str(), c.profile_value);
+  }
+  return b;
+}
+
+}  // namespace
+
+void reportCalibration(const CheckModel& m, const Fit& fin, ModelCheckResult& R) {
+  R.calibration.clear();
+  for (const CalibrationConstant& k : m.calibrationConstants()) {
+    CalibrationValue c;
+    c.id = k.id;
+    c.unit = k.unit;
+    c.label = k.label;
+    c.value = fin.params.nuisance[k.index] * k.display_scale;
+    c.sigma = fin.sigma[k.index] * k.display_scale;
+    c.profile_value = k.profile_value;
+    c.prior_sigma = k.prior_sigma;
+    c.identified = c.sigma < 0.5 * c.prior_sigma;
+    // Far from the profile: more than 3 of its own sigmas and more than half
+    // the prior's (a small but certain difference is not worth a word).
+    const double d = std::abs(c.value - c.profile_value);
+    if (d > 3.0 * c.sigma && d > 0.5 * c.prior_sigma) c.finding = calibrationWords(c);
+    R.calibration.push_back(c);
+  }
+}
 
 Fit jointRefit(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, const std::vector<std::size_t>& accepted,
                const Params& base, std::vector<MissingPhysics>& found, ModelCheckResult& R) {
@@ -20,13 +60,15 @@ Fit jointRefit(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, con
   for (auto& mp : found) {
     const std::size_t term = *findTerm(mp.id);
     const auto pos = std::find(accepted.begin(), accepted.end(), term) - accepted.begin();
-    mp.value = fin.params.terms[term] * lib[term].display_scale;
+    mp.profile_value = m.profileTermValue(term);
+    mp.value = mp.profile_value + fin.params.terms[term] * lib[term].display_scale;
     mp.sigma = fin.sigma[s.nN + pos] * lib[term].display_scale;
   }
   for (int j = 0; j < s.nN; ++j) {
     R.nuisance.push_back(fin.params.nuisance[j]);
     R.nuisance_sigma.push_back(fin.sigma[j]);
   }
+  reportCalibration(m, fin, R);
   R.net_buoyancy_kg = m.netBuoyancyKg(fin.params);
   {
     // Sigma of the reported net buoyancy by finite differences over the nuisance.

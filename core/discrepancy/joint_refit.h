@@ -13,8 +13,12 @@ namespace auv::discrepancy::detail {
 
 // Starts from `base` with the provisional values in R.accepted. Sets
 // R.final_params, R.accepted, R.nuisance(_sigma), the net buoyancy and CG
-// with sigmas, and value/sigma of every entry of `found`.
+// with sigmas, R.calibration, and value/sigma of every entry of `found`.
 Fit jointRefit(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, const std::vector<std::size_t>& accepted,
                const Params& base, std::vector<MissingPhysics>& found, ModelCheckResult& R);
+
+// The model's calibration constants at `fin` into R.calibration, with a
+// finding in words for each the log puts far from the profile's value.
+void reportCalibration(const CheckModel& m, const Fit& fin, ModelCheckResult& R);
 
 }  // namespace auv::discrepancy::detail

@@ -54,6 +54,7 @@ std::string channelWords(Channel c) {
     case Channel::kPitch: return "pitch error";
     case Channel::kRoll: return "roll error";
     case Channel::kSpeed: return "speed error";
+    case Channel::kSurgeForce: return "surge-force error";
   }
   return "error";
 }

@@ -13,6 +13,9 @@
 //   4. Each selected term must also improve the SIMULATION error on data not
 //      used to fit it (two halves of the dives/legs, each fitted on one half
 //      and scored on the other); only then is it accepted.
+//   The ballast state includes the model's calibration constants (hydrodynamic
+//   group scales, propeller torque) under their priors: fitted from step 1 on,
+//   reported under `calibration`, never as missing physics.
 //   5. Final joint fit (ballast state + accepted terms), uncertainties, RMS
 //      before/after per channel on fitted and held-out data, and where each
 //      residual and each accepted term concentrates (localisation.h).
@@ -31,6 +34,12 @@ struct ModelCheckOptions {
   int bootstrap_replicates = 60;
   double min_inclusion = 0.6;    // bootstrap inclusion probability to go on to the simulation check
   double min_sim_gain = 0.01;    // relative drop of the held-out simulation cost to accept
+  // ... or, when a calibrated constant already mimics the term in simulation
+  // (a calibrated linear pitch damping flies like an extra quadratic one),
+  // a held-out simulation cost no worse than this and a relative drop of the
+  // held-out equation error (weighted, the other half of the units) of at least min_eq_gain.
+  double max_sim_loss = 0.06;
+  double min_eq_gain = 0.05;
   double collinear_threshold = 0.95;  // reported as "cannot be told apart"
   double degenerate_r2 = 0.995;       // share of a regressor the ballast state explains beyond which the term is not tried
   double stlsq_threshold = 0.5;  // in units of each term's typical value (comparison only)
@@ -49,7 +58,8 @@ struct ChannelRms {
 
 struct MissingPhysics {
   std::string id, unit;
-  double value = 0.0, sigma = 0.0;  // display unit
+  double value = 0.0, sigma = 0.0;  // display unit: what the vehicle has (profile_value + the fitted increment)
+  double profile_value = 0.0;       // what the profile assumed, display unit
   Channel channel = Channel::kDepth;   // simulation channel it improves most
   double rms_before = 0.0, rms_after = 0.0;  // held-out simulation RMS on `channel`, display unit
   std::string where;
@@ -70,6 +80,15 @@ struct CandidateReport {
   double nuisance_r2 = 0.0;  // share of its regressor the ballast state explains
 };
 
+// A calibration constant as fitted with the ballast state (check_model.h).
+struct CalibrationValue {
+  std::string id, unit, label;
+  double value = 0.0, sigma = 0.0;  // posterior, reported unit
+  double profile_value = 0.0, prior_sigma = 0.0;
+  bool identified = false;  // posterior sigma below half the prior's: the log, not the prior, says it
+  std::string finding;      // set when the log puts it far from the profile's value, in words
+};
+
 struct IdentifiabilityIssue {
   std::string a, b;  // term ids ("ballast_state" for the nuisance)
   double correlation = 0.0;
@@ -82,6 +101,7 @@ struct ModelCheckResult {
   int units = 0;
   double neff_ratio = 1.0;
   std::vector<MissingPhysics> missing_physics;  // best first
+  std::vector<CalibrationValue> calibration;    // constants the profile only assumes, fitted; never missing physics
   std::vector<CandidateReport> candidates;
   std::vector<IdentifiabilityIssue> identifiability;
   std::vector<std::string> stlsq_selected;      // SINDy-style comparison

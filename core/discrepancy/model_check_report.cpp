@@ -1,5 +1,6 @@
 #include "discrepancy/model_check_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -39,6 +40,7 @@ nlohmann::json toJson(const ModelCheckResult& r) {
   for (const MissingPhysics& m : r.missing_physics) {
     nlohmann::json x = {{"id", m.id},
                         {"value", num(m.value)},
+                        {"profile_value", num(m.profile_value)},
                         {"unit", m.unit},
                         {"sigma", num(m.sigma)},
                         {"rms_before", num(m.rms_before)},
@@ -55,6 +57,24 @@ nlohmann::json toJson(const ModelCheckResult& r) {
     mp.push_back(x);
   }
   j["missing_physics"] = mp;
+  nlohmann::json cal = nlohmann::json::array();
+  nlohmann::json findings = nlohmann::json::array();
+  for (const CalibrationValue& c : r.calibration) {
+    nlohmann::json x = {{"id", c.id},
+                        {"value", num(c.value)},
+                        {"unit", c.unit},
+                        {"sigma", num(c.sigma)},
+                        {"profile_value", num(c.profile_value)},
+                        {"prior_sigma", num(c.prior_sigma)},
+                        {"identified", c.identified}};
+    if (!c.finding.empty()) {
+      x["finding"] = c.finding;
+      findings.push_back(c.finding);
+    }
+    cal.push_back(x);
+  }
+  j["calibration"] = cal;
+  j["calibration_findings"] = findings;
   j["net_buoyancy_kg"] = num(r.net_buoyancy_kg);
   j["net_buoyancy_sigma_kg"] = num(r.net_buoyancy_sigma_kg);
   if (r.has_cg) {
@@ -68,8 +88,11 @@ nlohmann::json toJson(const ModelCheckResult& r) {
   mc["effective_sample_share"] = num(r.neff_ratio);
   mc["net_buoyancy_without_terms_kg"] = num(r.net_buoyancy_base_kg);
   nlohmann::json ballast = nlohmann::json::object();
-  for (std::size_t k = 0; k < r.nuisance_names.size(); ++k)
-    ballast[r.nuisance_names[k]] = {{"value", num(r.nuisance[k])}, {"sigma", num(r.nuisance_sigma[k])}};
+  for (std::size_t k = 0; k < r.nuisance_names.size() && k < r.nuisance.size(); ++k) {
+    const bool calibration = std::any_of(r.calibration.begin(), r.calibration.end(),
+                                         [&](const CalibrationValue& c) { return c.id == r.nuisance_names[k]; });
+    if (!calibration) ballast[r.nuisance_names[k]] = {{"value", num(r.nuisance[k])}, {"sigma", num(r.nuisance_sigma[k])}};
+  }
   mc["ballast_state"] = ballast;
   nlohmann::json cands = nlohmann::json::array();
   for (const CandidateReport& c : r.candidates)
@@ -113,6 +136,8 @@ void mergeIntoAnalysisJson(nlohmann::json& a, const ModelCheckResult& r) {
                              {"net_buoyancy_sigma_kg", a.value("net_buoyancy_sigma_kg", nlohmann::json())},
                              {"cg_offset_mm", a.value("cg_offset_mm", nlohmann::json())}};
   a["missing_physics"] = m["missing_physics"];
+  a["calibration"] = m["calibration"];
+  a["calibration_findings"] = m["calibration_findings"];
   a["net_buoyancy_kg"] = m["net_buoyancy_kg"];
   a["net_buoyancy_sigma_kg"] = m["net_buoyancy_sigma_kg"];
   if (m.contains("cg_offset_mm")) {
@@ -133,12 +158,23 @@ std::string toText(const ModelCheckResult& r) {
   } else {
     s += "  Missing physics, best first:\n";
     for (const MissingPhysics& m : r.missing_physics) {
-      std::snprintf(b, sizeof b, "    %-24s %.4g +- %.2g %s; held-out %s RMS %.3g -> %.3g %s\n", m.id.c_str(), m.value, m.sigma,
-                    m.unit.c_str(), channelName(m.channel), m.rms_before, m.rms_after, channelUnit(m.channel));
+      std::snprintf(b, sizeof b, "    %-24s %.4g +- %.2g %s (profile %.4g); held-out %s RMS %.3g -> %.3g %s\n", m.id.c_str(),
+                    m.value, m.sigma, m.unit.c_str(), m.profile_value, channelName(m.channel), m.rms_before, m.rms_after,
+                    channelUnit(m.channel));
       s += b;
       if (!m.where.empty()) s += "      where: " + m.where + "\n";
       if (!m.evidence.empty()) s += "      note: " + m.evidence + "\n";
     }
+  }
+  if (!r.calibration.empty()) {
+    s += "  Calibration (fitted with the ballast state under priors; not missing physics):\n";
+    for (const CalibrationValue& c : r.calibration) {
+      std::snprintf(b, sizeof b, "    %-26s %.4g +- %.2g %s (profile %.4g, prior sigma %.2g)%s\n", c.id.c_str(), c.value, c.sigma,
+                    c.unit.c_str(), c.profile_value, c.prior_sigma, c.identified ? "" : " - stayed at its prior");
+      s += b;
+    }
+    for (const CalibrationValue& c : r.calibration)
+      if (!c.finding.empty()) s += "  Calibration finding: " + c.finding + "\n";
   }
   std::snprintf(b, sizeof b, "  Net buoyancy (jointly with the accepted terms): %+.3f +- %.3f kg (without them %+.3f kg)\n",
                 r.net_buoyancy_kg, r.net_buoyancy_sigma_kg, r.net_buoyancy_base_kg);

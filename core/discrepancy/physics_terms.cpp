@@ -18,6 +18,7 @@ const char* channelName(Channel c) {
     case Channel::kPitch: return "pitch";
     case Channel::kRoll: return "roll";
     case Channel::kSpeed: return "speed";
+    case Channel::kSurgeForce: return "surge_force";
   }
   return "?";
 }
@@ -32,6 +33,7 @@ const char* channelUnit(Channel c) {
     case Channel::kPitch:
     case Channel::kRoll: return "deg";
     case Channel::kSpeed: return "m/s";
+    case Channel::kSurgeForce: return "N";
   }
   return "";
 }

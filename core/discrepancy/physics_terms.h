@@ -32,6 +32,7 @@ enum class Channel {
   kPitch,             // rad
   kRoll,              // rad
   kSpeed,             // m/s
+  kSurgeForce,        // N, body x (AUV surge equation)
 };
 const char* channelName(Channel c);
 const char* channelUnit(Channel c);  // unit of the reported RMS (deg for angles)

@@ -8,7 +8,10 @@
 // "model_check.terms" {id: value}, which the model check's own models read
 // (acceptedTermsFromProfile). Every accepted term is also listed under
 // "model_check.accepted" with its value, sigma, unit, where it was written and
-// the log it came from.
+// the log it came from. Identified calibration constants (result.calibration)
+// go into the sections the simulator reads them from (propeller torque into
+// sim_assumptions.prop_KQ0, group scales into the hydrodynamics, roll-damping
+// and stern-plane fields), listed under "model_check.calibrated".
 #include <string>
 #include <vector>
 
@@ -19,9 +22,13 @@
 
 namespace auv::discrepancy {
 
-// `profile_doc` is the profile file's JSON as read (JsonReader::parseFile(v.file)).
+// `profile_doc` is the complete profile JSON (profileToJson(v): with the
+// companion sections, so that the written profile is a whole vehicle).
 nlohmann::json profileWithAcceptedTerms(const nlohmann::json& profile_doc, const VehicleProfile& v,
                                         const ModelCheckResult& result, const std::string& log_name);
+
+// Whether the check identified calibration constants that --accept would write.
+bool hasCalibrationToWrite(const ModelCheckResult& result);
 
 // The configuration's vehicle after a model check, with only the terms the
 // technician accepted (`accepted_ids`, MissingPhysics ids; the others are

@@ -9,6 +9,18 @@
 
 namespace auv::discrepancy::detail {
 
+namespace {
+
+// Held-out equation error, each channel's mean square over its noise level.
+double heldOutEquationCost(const FitSetup& s, const HeldOut& h) {
+  double c = 0.0;
+  for (std::size_t k = 0; k < s.C; ++k)
+    if (h.eq_n[k] > 0) c += h.eq_sse[k] / h.eq_n[k] / (s.sigma[k] * s.sigma[k]);
+  return c;
+}
+
+}  // namespace
+
 TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, const HeldOutScorer& scorer,
                            const TermSelection& ts, const std::vector<std::size_t>& cand, const Params& base,
                            const ModelCheckOptions& o, ModelCheckResult& R) {
@@ -37,9 +49,14 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     for (std::size_t a : accepted) st.terms[a] = R.accepted[a];
     const HeldOut ho = scorer.score(trial, st);
     const double before = scorer.cost(hoCur), after = scorer.cost(ho);
-    if (!(after < before * (1.0 - o.min_sim_gain))) {
-      std::snprintf(buf, sizeof buf, "improves the equation error but not the held-out simulation error (cost %.4g -> %.4g)",
-                    before, after);
+    const double eqBefore = heldOutEquationCost(s, hoCur), eqAfter = heldOutEquationCost(s, ho);
+    const bool simBetter = after < before * (1.0 - o.min_sim_gain);
+    const bool eqBetter = after <= before * (1.0 + o.max_sim_loss) && eqAfter < eqBefore * (1.0 - o.min_eq_gain);
+    if (!simBetter && !eqBetter) {
+      std::snprintf(buf, sizeof buf,
+                    "improves the equation error but not the held-out simulation error (cost %.4g -> %.4g; held-out "
+                    "equation error %.4g -> %.4g)",
+                    before, after, eqBefore, eqAfter);
       c.status = buf;
       continue;
     }
@@ -50,7 +67,7 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     mp.inclusion_probability = incl[k];
     mp.delta_bic = sel.steps[step].delta_bic;
     mp.t_value = sel.steps[step].t_value;
-    mp.heldout_gain = 1.0 - after / before;
+    mp.heldout_gain = simBetter ? 1.0 - after / before : 1.0 - eqAfter / eqBefore;
     // The channel the term helps most (relative to the base error).
     double bestGain = -std::numeric_limits<double>::infinity();
     for (std::size_t ch = 0; ch < SC; ++ch) {
@@ -64,7 +81,7 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
       }
     }
     for (std::size_t k2 = 0; k2 < hoCur.prior_z2.size(); ++k2)
-      if (ho.prior_z2[k2] < hoCur.prior_z2[k2] && hoCur.prior_z2[k2] > 4.0)
+      if (s.priors[k2].measured && ho.prior_z2[k2] < hoCur.prior_z2[k2] && hoCur.prior_z2[k2] > 4.0)
         mp.evidence = "the flight data alone cannot separate it from " + R.nuisance_names[static_cast<std::size_t>(s.priors[k2].index)] +
                       "; the independent measurement of that (prior) does: without the term the fit is " +
                       std::to_string(static_cast<int>(std::lround(std::sqrt(hoCur.prior_z2[k2])))) + " sigma from it";

@@ -75,5 +75,11 @@ TEST(MissionCli, AnalyzeSeagliderDiveFolder) {
                      real("seaglider-sg171-bay-of-bengal-2024/sg171-dives100-109.csv"));
 }
 
+// The Slocum flight's own binary files (.dbd + .ebd segments and their
+// sensor-list caches) give the answer the dbd2asc-made CSV gives.
+TEST(MissionCli, AnalyzeSlocumRawFolderLikeItsCsv) {
+  expectSameAnalysis(real("slocum-comet-baltic-2016/raw"), real("slocum-comet-baltic-2016/comet-2016-174-05.csv"));
+}
+
 }  // namespace
 }  // namespace auv

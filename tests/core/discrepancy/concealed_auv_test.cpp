@@ -7,6 +7,7 @@
 // recover the ballast error.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/units.h"
@@ -65,12 +66,28 @@ TEST(ConcealedAuv, ControlFindsNothingAndRecoversTheBallastError) {
   EXPECT_NEAR(r.net_buoyancy_kg, std::stod(*log.metadataValue("truth_net_buoyancy_mean_kg")), 0.03);
 }
 
-TEST(ConcealedAuv, PropellerTorque) {
+// Issue 11: the propeller torque is a calibration constant of the AUV (prior
+// 0 +- the profile's), fitted with the ballast state and reported under
+// `calibration`, never as missing physics (this test asserted it as missing
+// physics before). The calibrated value is the vehicle's whole torque.
+TEST(ConcealedAuv, PropellerTorqueIsCalibratedNotMissing) {
   SyntheticAuvTruth t = baseTruth();
   t.extra_prop_KQ0 = 0.004;  // 0.37 deg of roll at full speed against 0.48 deg from the CG y error
-  const double D = delphin2().vehicle.model.prop.diameter_m;
-  const double k = 1025.0 * std::pow(D, 5) * t.extra_prop_KQ0 / 3600.0;  // N m / rpm^2 at bollard pull
-  test::expectAllFound(runConcealedCase("propeller_torque", "propeller_torque", k, kSeeds, factory(t)));
+  const sim::Propeller& p = delphin2().vehicle.model.prop;
+  const double perKQ = 1025.0 * std::pow(p.diameter_m, 5) / 3600.0;  // N m / rpm^2 per unit K_Q0 at bollard pull
+  const double profileTorque = perKQ * p.torque_sign * p.KQ0, truthTorque = profileTorque + perKQ * t.extra_prop_KQ0;
+  for (std::uint64_t seed : kSeeds) {
+    const ModelCheckResult r = runModelCheck(*factory(t)(seed));
+    for (const MissingPhysics& m : r.missing_physics) ADD_FAILURE() << "seed " << seed << ": " << m.id << " named";
+    const auto c = std::find_if(r.calibration.begin(), r.calibration.end(),
+                                [](const CalibrationValue& v) { return v.id == "propeller_torque"; });
+    ASSERT_NE(c, r.calibration.end());
+    EXPECT_TRUE(c->identified);
+    EXPECT_NEAR(c->profile_value, profileTorque, 1e-12);
+    EXPECT_NEAR(c->value, truthTorque, 0.1 * (truthTorque - profileTorque));
+    EXPECT_FALSE(c->finding.empty());  // 53 % above the profile's, many sigmas: said in words
+    EXPECT_NE(c->finding.find("the profile assumed"), std::string::npos);
+  }
 }
 
 TEST(ConcealedAuv, RollSensorBiasWithARollTest) {
@@ -81,7 +98,15 @@ TEST(ConcealedAuv, RollSensorBiasWithARollTest) {
   t.roll_bias_deg = 1.0;
   AuvCheckOptions o;
   o.cg_y_sigma_m = 0.00015;
-  test::expectAllFound(runConcealedCase("roll_sensor_bias", "roll_sensor_bias", 1.0, kSeeds, factory(t, o)));
+  const auto r = runConcealedCase("roll_sensor_bias", "roll_sensor_bias", 1.0, kSeeds, factory(t, o));
+  EXPECT_EQ(r.detected, r.seeds);
+  EXPECT_EQ(r.false_positives, 0);
+  for (double e : r.rel_error) EXPECT_LE(e, 0.30);
+  // Issue 11: the propeller torque is now calibrated (prior 0 +- the
+  // profile's) and flies part of a constant roll offset at the log's three
+  // speeds, so the held-out roll RMS of the term's replay dropped in 2 of 3
+  // seeds (3 of 3 before); the roll test's CG y is what proves the bias.
+  EXPECT_GE(r.sim_improved, r.detected - 1);
 }
 
 TEST(ConcealedAuv, RollSensorBiasWithoutARollTestIsReportedAsNotIdentifiable) {

@@ -38,7 +38,8 @@ inline CaseOutcome runConcealedCase(const std::string& label, const std::string&
     for (const MissingPhysics& mp : r.missing_physics) {
       if (mp.id == expected_id) {
         found = true;
-        o.rel_error.push_back(std::abs(mp.value - truth_display) / std::abs(truth_display));
+        // The reported value is the vehicle's (profile + effect); the truth here is the effect.
+        o.rel_error.push_back(std::abs(mp.value - mp.profile_value - truth_display) / std::abs(truth_display));
         if (mp.rms_after < mp.rms_before) ++o.sim_improved;
       } else {
         ++o.false_positives;
@@ -46,6 +47,9 @@ inline CaseOutcome runConcealedCase(const std::string& label, const std::string&
       }
     }
     o.detected += found;
+    if (!found && !expected_id.empty())
+      for (const CandidateReport& c : r.candidates)
+        if (c.id == expected_id) std::printf("    seed %llu: %s %s\n", static_cast<unsigned long long>(seed), c.id.c_str(), c.status.c_str());
   }
   double maxErr = 0.0, meanErr = 0.0;
   for (double e : o.rel_error) {

@@ -19,6 +19,7 @@
 #include "sim/water_from_log.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/profile_loader.h"
+#include "vehicle/profile_writer.h"
 #include "vehicle/vehicle_catalog.h"
 
 namespace auv::discrepancy {
@@ -190,6 +191,48 @@ TEST(ModelIt, OnlyTheTermsTheTechnicianAcceptsReachTheVehicle) {
   // Nothing accepted: the vehicle as it was.
   const VehicleProfile none = vehicleWithAcceptedTerms(JsonReader::parseFile(v.file), v, r, {}, "survey.csv");
   EXPECT_DOUBLE_EQ(none.hull.compressibility_per_dbar, v.hull.compressibility_per_dbar);
+}
+
+// Issue 11 item 7: what --accept writes is a whole vehicle (HUGIN's companion
+// hydrodynamics included, readable without resources/sim), the identified
+// calibration constants go where the simulator reads them, constants the log
+// did not identify stay as they were, and the written profile round-trips.
+TEST(ProfileUpdate, CalibratedConstantsGoIntoACompleteProfile) {
+  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("hugin1000");
+  const sim::SimVehicle nominal = sim::loadSimVehicle(v, AUV_RESOURCE_DIR);
+  const sim::Propeller& p = nominal.model.prop;
+  const double perKQ = 1025.0 * std::pow(p.diameter_m, 5) / 3600.0;
+  ModelCheckResult r;
+  auto cal = [&](const char* id, double value, double profile, bool identified) {
+    CalibrationValue c;
+    c.id = id;
+    c.value = value;
+    c.profile_value = profile;
+    c.sigma = 0.01 * std::abs(profile);
+    c.identified = identified;
+    r.calibration.push_back(c);
+  };
+  cal("propeller_torque", 0.25 * perKQ * p.KQ0, perKQ * p.KQ0, true);  // a quarter of the assumed torque
+  cal("heave_derivatives", 1.3, 1.0, true);
+  // Munk inside the tabulated M_w: the net derivative is M_w' alone.
+  const double L = 5.23, munk = (-47.0 + 1490.0) / (0.5 * 1025.0 * L * L * L);
+  cal("net_pitch_moment_derivative", -4.5e-3, -4.5e-3 + munk, true);
+  cal("stern_plane_effectiveness", 0.7, 1.0, false);  // stayed at its prior: not written
+  const nlohmann::json out = profileWithAcceptedTerms(profileToJson(v), v, r, "survey.csv");
+  EXPECT_EQ(out["model_check"]["calibrated"].size(), 3u);
+  const VehicleProfile w = parseVehicleProfile(out.dump(), "/nowhere/hugin1000.model-check.json");
+  ASSERT_TRUE(w.sections.contains("hydrodynamics"));
+  const sim::SimVehicle s = sim::loadSimVehicle(w, "/nonexistent-resource-dir");  // no companion lookup
+  EXPECT_NEAR(s.model.prop.KQ0, 0.25 * p.KQ0, 1e-12);
+  EXPECT_NEAR(s.model.hydro.Zw_prime, 1.3 * nominal.model.hydro.Zw_prime, 1e-15);
+  EXPECT_NEAR(s.model.hydro.Zww_kg_per_m, 1.3 * nominal.model.hydro.Zww_kg_per_m, 1e-9);
+  // The simulator's M_w' is the net less (X_udot - Z_wdot) / (0.5 rho L^3), from the companion's numbers.
+  EXPECT_NEAR(s.model.hydro.Mw_prime, -4.5e-3 - munk, 1e-12);
+  EXPECT_EQ(s.model.planes.M_uud_per_deg, nominal.model.planes.M_uud_per_deg);
+  // Load -> write -> load of the written profile: the same vehicle, hydrodynamics included.
+  const VehicleProfile again = parseVehicleProfile(profileToJson(w).dump(), "again.json");
+  EXPECT_EQ(profileToJson(again), profileToJson(w));
+  EXPECT_EQ(again.sections["hydrodynamics"], w.sections["hydrodynamics"]);
 }
 
 TEST(ModelCheckJson, TheContractFieldsAreThere) {
