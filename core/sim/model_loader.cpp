@@ -27,7 +27,7 @@ RigidBody readBody(const VehicleProfile& profile, const JsonReader& hydro) {
 Hydrodynamics readHydro(const JsonReader& r) {
   r.refuseUnknownKeys({"source", "comment", "reference_length_m", "Iyy_kgm2", "Xudot_kg", "Zwdot_kg", "Mqdot_kgm2_per_rad",
                        "Xu_kg_per_s", "Zw_prime", "Zq_prime", "Mw_prime", "Mq_prime", "Xuu_kg_per_m", "Zww_kg_per_m",
-                       "Zqq_kgm_per_rad2", "Mww_kg", "Mqq_kgm2_per_rad2"},
+                       "Zqq_kgm_per_rad2", "Mww_kg", "Mqq_kgm2_per_rad2", "munk_moment"},
                       kDoc);
   Hydrodynamics h;
   // Added masses and damping derivatives are <= 0 in SNAME sign convention.

@@ -63,7 +63,7 @@ VehicleProfile fromJson(const nlohmann::json& doc, const std::string& file) {
   // layout, glider flight, simulator, model check), which read them by name.
   root.refuseUnknownKeys({"id", "name", "kind", "source", "comment", "mass_in_air_kg", "hull", "cb_mm", "cg_mm", "bg_mm",
                           "adjustment_points", "weight_kit", "spec", "weighing", "slocum", "glider_flight",
-                          "flight_model", "hydrodynamics", "actuators", "sim_assumptions", "autopilot", "model_check"},
+                          "flight_model", "seaglider", "hydrodynamics", "actuators", "sim_assumptions", "autopilot", "model_check"},
                          kProfileDoc);
   VehicleProfile v;
   v.file = file;
