@@ -4,6 +4,7 @@
 #include "wizard/wizard_state.h"
 
 class QLabel;
+class QPushButton;
 class QTableWidget;
 
 namespace auv::ui {
@@ -22,9 +23,13 @@ class FirstMissionResultPage : public QWizardPage {
   void initializePage() override;
   bool validatePage() override;
   int nextId() const override { return -1; }
+  // Writes the first mission's work order (work_order.h) as a PDF; returns
+  // an empty string on success, else why not (also shown on the page).
+  QString exportPdf(const QString& path);
 
  private:
   void showReport(const FirstMissionReport& r);
+  void exportWithDialog();
   WizardState& state_;
   QLabel* before_;
   QLabel* predicted_;
@@ -32,6 +37,8 @@ class FirstMissionResultPage : public QWizardPage {
   QLabel* save_status_;
   QTableWidget* table_;
   WeightMapWidget* map_;
+  QPushButton* export_pdf_;
+  QLabel* export_status_;
 };
 
 }  // namespace auv::ui
