@@ -26,13 +26,13 @@ grep -q "^License: GPL-3+" "$tmp/usr/share/doc/auvballast/copyright" || fail "th
 cmp -s LICENSE "$tmp/usr/share/doc/auvballast/LICENSE" || fail "the packaged LICENSE differs from ./LICENSE"
 # The man page is made from --help at build time: every subcommand --help
 # lists must be in it (a stale or empty page fails here).
-man=$(zcat "$tmp/usr/share/man/man1/auvballast.1.gz")
+man=$(zcat "$tmp/usr/share/man/man1/auvballast.1.gz" | sed 's/\\-/-/g')  # roff writes - as \-
 subcommands=$("$build/app/cli/auvballast" --help | awk '/^Subcommands:/{on=1; next} on && NF {print $1}')
 [ -n "$subcommands" ] || fail "auvballast --help lists no subcommands"
 for c in $subcommands; do
   grep -qF -- "$c" <<<"$man" || fail "the man page lacks the subcommand $c: rebuild (help2man)"
 done
-grep -qF -- "--render-pages" <(zcat "$tmp/usr/share/man/man1/auvballast-gui.1.gz") || fail "the auvballast-gui man page lacks --render-pages"
+grep -qF -- "--render-pages" <(zcat "$tmp/usr/share/man/man1/auvballast-gui.1.gz" | sed 's/\\-/-/g') || fail "the auvballast-gui man page lacks --render-pages"
 if command -v appstreamcli >/dev/null; then
   appstreamcli validate --no-net "$tmp/usr/share/metainfo/io.github.auvballast.metainfo.xml" >"$build/packages/appstream.txt" 2>&1 ||
     { cat "$build/packages/appstream.txt"; fail "the AppStream metainfo does not validate"; }
