@@ -33,7 +33,9 @@ bool renderPagesRequested(int argc, char** argv) {
 int renderPages(const QString& out_dir) {
   const QString scratch = QStandardPaths::writableLocation(QStandardPaths::TempLocation) + "/auvballast-render";
   const auv::ui::RenderedPages r =
-      auv::ui::renderDemoPages(auv::app::resourceDir(), out_dir, scratch, auv::nowUtc());
+      // The demo's own day (its survey log is of 2026-05-14, as in the
+      // screenshot tests): the pages look the same whenever they are rendered.
+      auv::ui::renderDemoPages(auv::app::resourceDir(), out_dir, scratch, auv::makeUtc(2026, 5, 20, 12, 0, 0));
   std::cout << "Rendered " << r.files.size() << " wizard pages and work orders of the demo into "
             << out_dir.toStdString() << "/\n";
   if (!r.error.isEmpty()) {
