@@ -3,7 +3,10 @@
 #  1. HUGIN 1000 first mission from a crane weighing (resources/examples/hugin1000_first_mission.json),
 #  2. Slocum G2 first mission from the report's tank session (resources/examples/slocum_tank_weighing.json),
 #  3. post mission: a simulated HUGIN mission with a known ballast error, analysed (recommendation included),
-#  4. model check of a shipped glider log whose hull compressibility the model lacks.
+#  4. model check of a shipped glider log whose hull compressibility the model lacks,
+#  5. the operator wizard on the same demo data: every page rendered offscreen into
+#     ./example-output/wizard/*.png (with the work orders as PNG and PDF), and, on a
+#     machine with a display, the wizard opened on the HUGIN demo.
 # JSON reports are written to ./example-output/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,3 +30,14 @@ echo; echo "== Slocum G2, model check of a log with concealed hull compressibili
 $exe model-check --vehicle slocum_g2 --log resources/examples/slocum_g2_model-check_compressibility.csv \
     --json "$out/slocum_g2_model_check.json"
 echo; echo "JSON reports in $out/"
+gui=./build/app/gui/auvballast-gui
+if [ -x "$gui" ]; then
+  echo; echo "== The operator wizard on the demo sessions"
+  "$gui" --demo --render-pages "$out/wizard"
+  if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+    echo "Opening the wizard on the HUGIN demo (auvballast-gui --demo); it stays open after this script."
+    nohup "$gui" --demo >/dev/null 2>&1 &
+  else
+    echo "No display here: look at the wizard's pages in $out/wizard/*.png (work orders also as PDF)."
+  fi
+fi

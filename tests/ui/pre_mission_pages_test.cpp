@@ -316,12 +316,20 @@ TEST_F(PreMissionPages, WorkOrderDrawsTheExpectedStringsOnOnePage) {
   const QString drawn = rec.joined();
   for (const QString& s : {QString("Ballast work order"), QString("HUGIN 1000"), QString("01-02-03"),
                            QString("2026-05-20 12:00:00 UTC"), QString("Fore / starboard"), QString("Aft / port"),
-                           QString("Operating depth 80 m"), QString("Signature")}) {
+                           QString("Operating depth 80 m"), QString("Where (top view, bow to the right)"),
+                           QString("Signature")}) {
     EXPECT_NE(drawn.indexOf(s), -1) << s.toStdString() << "\n" << drawn.toStdString();
   }
   for (std::size_t i = 0; i < 4; ++i) {
     EXPECT_NE(drawn.indexOf(massText(planned[i], false)), -1) << i;
     EXPECT_NE(drawn.indexOf(massText(oracle.points[i].add_kg, false, true)), -1) << i;
+    // The top-down map's label of the point: "<point>: <change> (<now> → <after>)".
+    const QString label = QString("%1: %2 (%3 → %4)")
+                              .arg(QString::fromStdString(wiz.state().vehicle->points[i].label),
+                                   massText(oracle.points[i].add_kg, false, true))
+                              .arg(exampleInstalledKg()[i], 0, 'f', 1)
+                              .arg(planned[i], 0, 'f', 1);
+    EXPECT_NE(drawn.indexOf(label), -1) << label.toStdString();
   }
   const QString net = QString("Net buoyancy %1%2 ± %3 kg")
                           .arg(oracle.predicted.net_buoyancy_kg > 0 ? "+" : "")

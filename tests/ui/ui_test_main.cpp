@@ -1,8 +1,10 @@
 // GoogleTest main for widget tests: the platform must be chosen before the
 // QApplication exists, and gtest_discover_tests runs this binary at build time.
 // Everything that could differ between machines or runs is pinned here so
-// that screenshots can be compared with committed goldens: the style, the
-// font (DejaVu Sans), no cursor blinking, and private settings/data folders.
+// that screenshots can be compared with committed goldens: the fonts
+// fontconfig may use (only Debian's DejaVu folder, whatever else is
+// installed), the style, the font (DejaVu Sans), no cursor blinking, and
+// private settings/data folders.
 #include <gtest/gtest.h>
 
 #include <QApplication>
@@ -13,6 +15,9 @@
 #include <QStyleFactory>
 #include <QTemporaryDir>
 #include <cstdlib>
+#include <iostream>
+
+#include "wizard/pinned_fonts.h"
 
 #include "wizard/operator_wizard.h"
 
@@ -24,6 +29,11 @@ int main(int argc, char** argv) {
     QFile::setPermissions(dir, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
     setenv("XDG_RUNTIME_DIR", dir.toLocal8Bit().constData(), 1);
   }
+  const QString fonts = auv::ui::pinFontsToDejaVu(QDir::tempPath() + "/auvballast-ui-test-fonts");
+  if (!fonts.isEmpty()) {
+    std::cerr << "ui_test: " << fonts.toStdString() << "\n";
+    return 1;
+  }
   QApplication app(argc, argv);
   QApplication::setOrganizationName("auvballast-test");
   QApplication::setApplicationName("auvballast-test");
@@ -32,8 +42,7 @@ int main(int argc, char** argv) {
   QTemporaryDir settings_dir(QDir::tempPath() + "/auvballast-ui-test-XXXXXX");
   QSettings::setDefaultFormat(QSettings::IniFormat);
   QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settings_dir.path());
-  QApplication::setStyle(QStyleFactory::create("Fusion"));
-  QApplication::setFont(QFont("DejaVu Sans", 10));
+  auv::ui::pinRenderingLook();
   QApplication::setCursorFlashTime(0);  // a blinking cursor would make screenshots random
   // No modal box may wait for a person: questions get the affirmative answer
   // (what the tests before these questions did), and tests that check a

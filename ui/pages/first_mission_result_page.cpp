@@ -2,9 +2,14 @@
 
 #include <QGridLayout>
 #include <QGroupBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
 #include <QScrollArea>
+#include <QSettings>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QRegularExpression>
@@ -20,6 +25,7 @@
 #include "widgets/weight_map_widget.h"
 #include "wizard/history_save.h"
 #include "wizard/operator_wizard.h"
+#include "wizard/work_order.h"
 
 namespace auv::ui {
 namespace {
@@ -37,16 +43,6 @@ QString piecesText(const PointRecommendation& p, bool grams) {
 }
 
 QString band(bool ok) { return ok ? QString("✓") : QString("✗"); }
-
-// Installed mass per profile point as the report saw it: the crane input,
-// or for a glider what core lists as "ballast now" (after the tank step if set).
-std::vector<double> installedPerPoint(const WizardState& s, const FirstMissionReport& r) {
-  if (r.method != "tank") return s.crane.installed_kg;
-  std::vector<double> out;
-  const auto& now = r.details.contains("ballast_now_g") ? r.details["ballast_now_g"] : nlohmann::json::object();
-  for (const auto& p : s.vehicle->points) out.push_back(now.value(p.name, 0.0) / 1000.0);
-  return out;
-}
 
 }  // namespace
 
@@ -72,6 +68,17 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   installed_box_ = new QGroupBox(tr("Installed now, after the work (what the next mission flies with)"));
   installed_box_->setObjectName("installed_now");
   installed_grid_ = new QGridLayout(installed_box_);
+  // The same one-page PDF work order as before any later mission.
+  export_pdf_ = new QPushButton(tr("Export work &order (PDF)…"));
+  export_pdf_->setObjectName("export_work_order");
+  export_pdf_->setAutoDefault(false);  // Enter means Finish, never a page button
+  export_status_ = new QLabel;
+  export_status_->setObjectName("work_order_status");
+  export_status_->setWordWrap(true);
+  connect(export_pdf_, &QPushButton::clicked, this, &FirstMissionResultPage::exportWithDialog);
+  auto* export_row = new QHBoxLayout;
+  export_row->addWidget(export_pdf_);
+  export_row->addWidget(export_status_, 1);
   auto* lay = new QVBoxLayout(this);
   lay->addWidget(before_);
   lay->addWidget(table_);
@@ -81,13 +88,39 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   lay->addWidget(predicted_);
   lay->addWidget(scroll, 2);
   lay->addWidget(installed_box_);
+  lay->addLayout(export_row);
   lay->addWidget(save_status_);
+}
+
+QString FirstMissionResultPage::exportPdf(const QString& path) {
+  QString error;
+  try {
+    auto* wiz = qobject_cast<OperatorWizard*>(wizard());
+    error = writeWorkOrderPdf(makeFirstMissionWorkOrder(state_, wiz ? wiz->now() : nowUtc()), path);
+  } catch (const InputError& e) {
+    error = QString::fromStdString(e.what());
+  }
+  export_status_->setStyleSheet(error.isEmpty() ? "color: #1b5e20;" : "color: #b00020;");
+  export_status_->setText(error.isEmpty() ? tr("Work order written to %1").arg(path) : tr("Not exported: %1").arg(error));
+  return error;
+}
+
+void FirstMissionResultPage::exportWithDialog() {
+  QSettings settings;
+  const QString dir = settings.value("paths/last_export_folder").toString();
+  const QString base = QString::fromStdString(state_.configuration_id.empty() ? std::string("first_mission") : state_.configuration_id);
+  const QString file = QFileDialog::getSaveFileName(this, tr("Export the work order"), dir + "/" + base + "_work_order.pdf",
+                                                    tr("PDF files (*.pdf)"));
+  if (file.isEmpty()) return;
+  settings.setValue("paths/last_export_folder", QFileInfo(file).absolutePath());
+  exportPdf(file);
 }
 
 void FirstMissionResultPage::initializePage() {
   state_.report.reset();
   state_.last_error.clear();
   save_status_->clear();
+  export_status_->clear();
   const bool tank = state_.isGlider();
   setTitle(tank ? tr("Ballast change after the tank weighing") : tr("Ballast change before the first mission"));
   try {
@@ -133,7 +166,7 @@ void FirstMissionResultPage::showReport(const FirstMissionReport& r) {
   // Every point visible without scrolling (6 for a glider, 4 for HUGIN).
   table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
                          table_->verticalHeader()->defaultSectionSize() * table_->rowCount() + 2 * table_->frameWidth());
-  map_->setModel(makeWeightMapModel(*state_.vehicle, installedPerPoint(state_, r), r));
+  map_->setModel(makeWeightMapModel(*state_.vehicle, firstMissionInstalledKg(state_, r), r));
   const auto& spec = state_.vehicle->spec;
   const bool nb_ok = r.predicted.net_buoyancy_kg >= spec.net_buoyancy_min_kg - 1e-9 &&
                      r.predicted.net_buoyancy_kg <= spec.net_buoyancy_max_kg + 1e-9;

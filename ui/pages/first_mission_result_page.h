@@ -6,6 +6,7 @@
 class QGridLayout;
 class QGroupBox;
 class QLabel;
+class QPushButton;
 class QTableWidget;
 
 namespace auv::ui {
@@ -26,6 +27,9 @@ class FirstMissionResultPage : public QWizardPage {
   void cleanupPage() override;
   bool validatePage() override;
   int nextId() const override { return -1; }
+  // Writes the first mission's work order (work_order.h) as a PDF; returns
+  // an empty string on success, else why not (also shown on the page).
+  QString exportPdf(const QString& path);
 
  private:
   void showReport(const FirstMissionReport& r);
@@ -33,6 +37,7 @@ class FirstMissionResultPage : public QWizardPage {
   // what was there plus the recommended change; saved as the installed state.
   void buildInstalledInputs(const FirstMissionReport& r);
   void storeInstalled();
+  void exportWithDialog();
   WizardState& state_;
   QLabel* before_;
   QLabel* predicted_;
@@ -43,6 +48,8 @@ class FirstMissionResultPage : public QWizardPage {
   QGroupBox* installed_box_;
   QGridLayout* installed_grid_;
   std::vector<NumberInput*> installed_;
+  QPushButton* export_pdf_;
+  QLabel* export_status_;
 };
 
 }  // namespace auv::ui

@@ -15,6 +15,7 @@
 #include "common/input_error.h"
 #include "planning/installed_prediction.h"
 #include "widgets/inputs.h"
+#include "widgets/weight_map_widget.h"
 
 namespace auv::ui {
 namespace {
@@ -37,7 +38,91 @@ QString piecesText(const PointRecommendation& p, bool grams) {
 
 QString inBand(bool ok) { return ok ? WorkOrder::tr("✓ in band") : WorkOrder::tr("✗ outside the band"); }
 
+// "Vehicle", "Configuration", "Date" and, when given, payload and area.
+QStringList headerLines(const WizardState& s, TimePoint now) {
+  const VehicleProfile& v = *s.vehicle;
+  QStringList h;
+  h << WorkOrder::tr("Vehicle: %1 (%2)").arg(q(v.name), q(v.id))
+    << WorkOrder::tr("Configuration: %1").arg(q(s.configuration_id))
+    << WorkOrder::tr("Date: %1").arg(q(toIsoUtc(now)).replace('T', ' ').replace('Z', " UTC"));
+  QString where = q(s.area);
+  if (!s.water_type.empty()) where += (where.isEmpty() ? "" : ", ") + q(s.water_type);
+  if (!s.payload_note.empty() || !where.isEmpty()) {
+    h << WorkOrder::tr("Payload: %1; area: %2").arg(q(s.payload_note), where.isEmpty() ? WorkOrder::tr("not given") : where);
+  }
+  return h;
+}
+
+QStringList tableColumns() {
+  return {WorkOrder::tr("Point"), WorkOrder::tr("Now"),   WorkOrder::tr("Change"),
+          WorkOrder::tr("Pieces"), WorkOrder::tr("After"), WorkOrder::tr("Done")};
+}
+
 }  // namespace
+
+std::vector<double> firstMissionInstalledKg(const WizardState& s, const FirstMissionReport& r) {
+  if (r.method != "tank") return s.crane.installed_kg;
+  std::vector<double> out;
+  const auto& now = r.details.contains("ballast_now_g") ? r.details["ballast_now_g"] : nlohmann::json::object();
+  for (const auto& p : s.vehicle->points) out.push_back(now.value(p.name, 0.0) / 1000.0);
+  return out;
+}
+
+WorkOrder makeFirstMissionWorkOrder(const WizardState& s, TimePoint now) {
+  if (!s.report || !s.vehicle) throw InputError("weighing", "nothing computed yet", "go back to the weighing page");
+  const VehicleProfile& v = *s.vehicle;
+  const FirstMissionReport& r = *s.report;
+  const bool g = s.isGlider();
+  // A glider's net buoyancy is a matter of grams (as on the result page).
+  auto net = [g](double kg, bool sign) {
+    return g ? WorkOrder::tr("%1 g").arg(sign ? signedFixed(kg * 1000.0, 1) : fixed(kg * 1000.0, 0))
+             : WorkOrder::tr("%1 kg").arg(sign ? signedFixed(kg, 2) : fixed(kg, 1));
+  };
+  WorkOrder w;
+  w.title = WorkOrder::tr("Ballast work order: first mission");
+  w.header = headerLines(s, now);
+  w.header << (r.method == "tank" ? WorkOrder::tr("From: the tank weighing") : WorkOrder::tr("From: the crane weighing"));
+  w.water_title = WorkOrder::tr("Water the vehicle is balanced for");
+  // A tank session states the target water by its density, not salinity.
+  w.water << (r.method == "tank" ? WorkOrder::tr("Target water: density %1 kg/m³ at %2 °C")
+                                       .arg(r.density_kgm3, 0, 'f', 2)
+                                       .arg(r.temperature_degC, 0, 'f', 2)
+                                 : WorkOrder::tr("%1 °C, %2 PSU at %3 m: density %4 kg/m³")
+                                       .arg(r.temperature_degC, 0, 'f', 2)
+                                       .arg(r.salinity_psu, 0, 'f', 2)
+                                       .arg(r.depth_m, 0, 'f', 0)
+                                       .arg(r.density_kgm3, 0, 'f', 2))
+          << WorkOrder::tr("Weighed %1 kg, buoyancy %2 kg: net buoyancy %3 before the change (positive = light)")
+                 .arg(fixed(r.weight_kg, g ? 3 : 1), fixed(r.buoyancy_kg, g ? 3 : 1), net(r.net_buoyancy_kg, true));
+
+  const std::vector<double> installed = firstMissionInstalledKg(s, r);
+  w.columns = tableColumns();
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const PointRecommendation& p = r.points[i];
+    const double before = i < installed.size() ? installed[i] : 0.0;
+    w.rows.push_back({q(p.label), massText(before, g), massText(p.add_kg, g, true), piecesText(p, g),
+                      massText(before + p.add_kg, g), QString()});
+  }
+  w.map = makeWeightMapModel(v, installed, r);
+
+  const TrimSpec& spec = v.spec;
+  const PredictedTrim& t = r.predicted;
+  const bool nb_ok = t.net_buoyancy_kg >= spec.net_buoyancy_min_kg - 1e-9 && t.net_buoyancy_kg <= spec.net_buoyancy_max_kg + 1e-9;
+  w.expected << WorkOrder::tr("After the change, in the water above:")
+             << WorkOrder::tr("Net buoyancy %1 (band %2 .. %3): %4")
+                    .arg(net(t.net_buoyancy_kg, true), net(spec.net_buoyancy_min_kg, false), net(spec.net_buoyancy_max_kg, false))
+                    .arg(inBand(nb_ok))
+             << WorkOrder::tr("Pitch at rest %1° (band ±%2°): %3")
+                    .arg(signedFixed(t.pitch_deg, 2), fixed(spec.pitch_tolerance_deg, 1))
+                    .arg(inBand(std::abs(t.pitch_deg) <= spec.pitch_tolerance_deg))
+             << WorkOrder::tr("Roll %1° (band ±%2°): %3")
+                    .arg(signedFixed(t.roll_deg, 2), fixed(spec.roll_tolerance_deg, 1))
+                    .arg(inBand(std::abs(t.roll_deg) <= spec.roll_tolerance_deg));
+  for (const auto& x : r.warnings) w.warnings << q(x);
+  for (const auto& x : r.notes) w.notes << q(x);
+  w.signature = WorkOrder::tr("Done by: ______________________   Signature: ______________________   Date: ____________");
+  return w;
+}
 
 WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint now) {
   if (!s.plan || !s.vehicle) throw InputError("plan", "nothing planned yet", "go back to the pre-mission page");
@@ -47,14 +132,8 @@ WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint 
   const int nd = g ? 3 : 2;
   WorkOrder w;
   w.title = WorkOrder::tr("Ballast work order");
-  w.header << WorkOrder::tr("Vehicle: %1 (%2)").arg(q(v.name), q(v.id))
-           << WorkOrder::tr("Configuration: %1").arg(q(s.configuration_id))
-           << WorkOrder::tr("Date: %1").arg(q(toIsoUtc(now)).replace('T', ' ').replace('Z', " UTC"));
-  QString where = q(s.area);
-  if (!s.water_type.empty()) where += (where.isEmpty() ? "" : ", ") + q(s.water_type);
-  if (!s.payload_note.empty() || !where.isEmpty()) {
-    w.header << WorkOrder::tr("Payload: %1; area: %2").arg(q(s.payload_note), where.isEmpty() ? WorkOrder::tr("not given") : where);
-  }
+  w.header = headerLines(s, now);
+  w.water_title = WorkOrder::tr("Next mission's water");
   w.header << WorkOrder::tr("Plan: %1 policy, from %2").arg(q(toString(p.policy)), q(basis.analysis_name));
 
   const PlannedPointResult& op = p.at_points.front();
@@ -72,7 +151,7 @@ WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint 
 
   const std::vector<double> planned = installedAfterPlan(basis.installed_kg, p);
   const std::vector<double>& actual = s.actually_installed_kg.size() == planned.size() ? s.actually_installed_kg : planned;
-  w.columns << WorkOrder::tr("Point") << WorkOrder::tr("Now") << WorkOrder::tr("Change") << WorkOrder::tr("Pieces") << WorkOrder::tr("After") << WorkOrder::tr("Done");
+  w.columns = tableColumns();
   bool differs = false;
   for (std::size_t i = 0; i < v.points.size() && i < p.points.size(); ++i) {
     const bool d = std::abs(actual[i] - planned[i]) > 5e-5;
@@ -82,6 +161,8 @@ WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint 
     w.rows.push_back({q(v.points[i].label), massText(i < basis.installed_kg.size() ? basis.installed_kg[i] : 0.0, g),
                       massText(p.points[i].add_kg, g, true), piecesText(p.points[i], g), after, QString()});
   }
+
+  w.map = makeWeightMapModel(v, basis.installed_kg, p.points);
 
   const InstalledPrediction r = predictInstalled(v, p, basis.installed_kg, actual);
   const TrimSpec& spec = v.spec;
@@ -115,7 +196,9 @@ void drawWorkOrder(QPainter& painter, const QPaintDevice& device, const WorkOrde
   painter.save();
   painter.fillRect(QRectF(0, 0, device.width(), device.height()), Qt::white);
   painter.setPen(Qt::black);
-  QFont body("DejaVu Sans");
+  // The fonts are named, never left to the desktop: DejaVu Sans (Debian's
+  // fonts-dejavu-core and -extra) prints the same page on every machine.
+  QFont body(QStringLiteral("DejaVu Sans"));
   body.setPointSizeF(9.5);
   QFont bold = body;
   bold.setBold(true);
@@ -123,12 +206,15 @@ void drawWorkOrder(QPainter& painter, const QPaintDevice& device, const WorkOrde
   title.setPointSizeF(16);
   QFont section = bold;
   section.setPointSizeF(11);
+  QFont small = body;
+  small.setPointSizeF(8.5);
   double y = page.top();
-  auto text = [&](const QString& t, const QFont& f, double gap_mm = 1.0) {
+  // Draws `t` at y and moves y below it; with draw = false only measures.
+  auto text = [&](const QString& t, const QFont& f, double gap_mm = 1.0, bool draw = true) {
     painter.setFont(f);
-    const QRectF box(page.left(), y, page.width(), page.bottom() - y);
+    const QRectF box(page.left(), y, page.width(), std::max(page.bottom() - y, 10 * mm));
     const QRectF used = painter.boundingRect(box, Qt::TextWordWrap, t);
-    painter.drawText(box, Qt::TextWordWrap, t);
+    if (draw) painter.drawText(box, Qt::TextWordWrap, t);
     y += used.height() + gap_mm * mm;
   };
   auto rule = [&] {
@@ -137,12 +223,27 @@ void drawWorkOrder(QPainter& painter, const QPaintDevice& device, const WorkOrde
     painter.setPen(Qt::black);
     y += 2 * mm;
   };
+  // Everything below the map: expected result, warnings, notes.
+  auto tail = [&](bool draw) {
+    text(WorkOrder::tr("Expected result"), section, 1.0, draw);
+    for (const auto& e : w.expected) text(e, body, 0.5, draw);
+    if (!w.warnings.isEmpty()) {
+      y += 2 * mm;
+      text(WorkOrder::tr("Warnings"), section, 1.0, draw);
+      for (const auto& x2 : w.warnings) text(WorkOrder::tr("⚠ %1").arg(x2), body, 0.5, draw);
+    }
+    if (!w.notes.isEmpty()) {
+      y += 2 * mm;
+      text(WorkOrder::tr("Steps and notes"), section, 1.0, draw);
+      for (const auto& n : w.notes) text(QStringLiteral("• %1").arg(n), small, 0.3, draw);
+    }
+  };
 
   text(w.title, title, 2);
   for (const auto& h : w.header) text(h, body, 0.5);
   y += 2 * mm;
   rule();
-  text(WorkOrder::tr("Next mission's water"), section);
+  text(w.water_title, section);
   for (const auto& l : w.water) text(l, body, 0.5);
   y += 3 * mm;
   text(WorkOrder::tr("What to change"), section);
@@ -183,13 +284,28 @@ void drawWorkOrder(QPainter& painter, const QPaintDevice& device, const WorkOrde
   for (const auto& r : w.rows) drawRow(r, body, false);
   y += 4 * mm;
 
-  text(WorkOrder::tr("Expected result"), section);
-  for (const auto& e : w.expected) text(e, body, 0.5);
-  if (!w.warnings.isEmpty()) {
-    y += 2 * mm;
-    text(WorkOrder::tr("Warnings"), section);
-    for (const auto& x2 : w.warnings) text(WorkOrder::tr("⚠ %1").arg(x2), body, 0.5);
+  if (w.map.length_m > 0) {
+    // The map takes what the text below leaves of the page (30..65 mm).
+    const double map_top = y;
+    tail(false);
+    const double tail_h = y - map_top;
+    y = map_top;
+    text(WorkOrder::tr("Where (top view, bow to the right)"), section);
+    const double free_h = page.bottom() - 30 * mm - y - tail_h;
+    const double map_h = std::clamp(free_h, 30 * mm, 65 * mm);
+    // drawWeightMap works in 96 dpi pixels: scale the painter to the
+    // device and size the font so it prints at 8 pt after scaling.
+    const double k = device.logicalDpiX() / 96.0;
+    QFont map_font = body;
+    map_font.setPointSizeF(8.0 / k);
+    painter.save();
+    painter.translate(page.left(), y);
+    painter.scale(k, k);
+    drawWeightMap(painter, QRectF(0, 0, page.width() / k, map_h / k), w.map, {map_font, Qt::white, Qt::black});
+    painter.restore();
+    y += map_h + 3 * mm;
   }
+  tail(true);
   // The signature line at the foot of the page.
   y = std::max(y + 8 * mm, page.bottom() - 20 * mm);
   rule();

@@ -1,7 +1,9 @@
 #pragma once
 // The one-page work order a technician takes to the vehicle: vehicle,
-// configuration, date, the next mission's water, what to change where (a
-// table), the expected result against the spec bands, and a signature line.
+// configuration, date, the water, what to change where (a table and the
+// top-down weight map), the expected result against the spec bands, and a
+// signature line. The same page for the first mission (from the weighing)
+// and before any later mission (from the plan).
 // Drawn by one function on any QPaintDevice, so the PDF, the on-screen
 // preview and the tests' render check show the same page.
 #include <QCoreApplication>
@@ -10,6 +12,7 @@
 #include <QStringList>
 #include <vector>
 
+#include "widgets/weight_map_model.h"
 #include "wizard/pre_mission_inputs.h"
 #include "wizard/wizard_state.h"
 
@@ -24,11 +27,14 @@ struct WorkOrder {
  public:
   QString title;
   QStringList header;  // "Vehicle: ...", "Configuration: ...", "Date: ..."
-  QStringList water;   // the next mission's water, one line each
+  QString water_title;  // "Next mission's water" or the weighing's
+  QStringList water;    // that water, one line each
   QStringList columns;
   std::vector<QStringList> rows;  // one per adjustment point
   QStringList expected;  // predicted results against the bands
   QStringList warnings;
+  QStringList notes;     // steps and explanations (a glider's battery and rail moves)
+  WeightMapModel map;    // the top-down map; length_m == 0: none
   QString signature;
 };
 
@@ -36,6 +42,15 @@ struct WorkOrder {
 // masses) and core's prediction for those masses. Throws InputError when
 // nothing is planned.
 WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint now);
+
+// The first mission's work order from the weighing's report (state.report):
+// the weighing water instead of the next mission's, no uncertainties (the
+// weighing's are in the notes). Throws InputError when nothing was computed.
+WorkOrder makeFirstMissionWorkOrder(const WizardState& s, TimePoint now);
+
+// Installed mass per profile point as a first-mission report saw it: the
+// crane input, or for a glider what core lists as "ballast now".
+std::vector<double> firstMissionInstalledKg(const WizardState& s, const FirstMissionReport& r);
 
 // Draws the page to fill `device` (A4 proportions expected); sizes follow
 // the device's resolution, so a 300 dpi PDF and a 96 dpi image match.
