@@ -367,10 +367,10 @@ def main():
     # Raw Slocum binaries: the ASCII path must not tell to re-export with m_present_time.
     write_bytes("unit_123.dbd", b"dbd_label:    DBD(dinkum_binary_data)file\nencoding_ver:    5\n" +
                 bytes((i * 31) % 256 for i in range(4096)))
-    case("log_slocum_dbd", an.format(f="{bad}/unit_123.dbd"), "unit_123.dbd", "raw Slocum binary", "dbd2asc")
+    case("log_slocum_dbd", an.format(f="{bad}/unit_123.dbd"), "unit_123.dbd:3:1", "not a complete Slocum binary file", "copy it from the glider again")
     write_bytes("unit_123.sbd", b"dbd_label:    DBD(dinkum_binary_data)file\nencoding_ver:    5\n" +
                 bytes((i * 37) % 256 for i in range(4096)))
-    case("log_slocum_sbd", an.format(f="{bad}/unit_123.sbd"), "unit_123.sbd", "raw Slocum binary", "dbd2asc")
+    case("log_slocum_sbd", an.format(f="{bad}/unit_123.sbd"), "unit_123.sbd:3:1", "not a complete Slocum binary file", "copy it from the glider again")
     case("log_fifo", an.format(f="{fifo}"), "FIFO", "regular file")
     case("log_device", an.format(f="/dev/zero"), "/dev/zero", "device", "regular file")
     case("log_missing", an.format(f="{bad}/no_such_log.csv"), "no_such_log.csv", "cannot open")

@@ -84,10 +84,10 @@ int runModelCheck(const ModelCheckOpts& o) {
   const MissionLog log = readLogArgument(o.log, logReadOptions(o.cache_dir), readReport);
   const analysis::AnalysisReport r = aboutFile(logArgumentLabel(o.log), [&] { return analysis::analyzeMission(log, v, a); });
   nlohmann::json j = analysis::toJson(r);
-  const discrepancy::ModelCheckResult mc = aboutFile(o.log, [&] {
-    const std::unique_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(log, v, app::resourceDir(), setup);
-    return discrepancy::runModelCheck(*model, mo);
-  });
+  const std::unique_ptr<discrepancy::CheckModel> model = aboutFile(
+      logArgumentLabel(o.log), [&] { return discrepancy::makeCheckModel(log, v, app::resourceDir(), setup); });
+  const discrepancy::ModelCheckResult mc =
+      aboutFile(logArgumentLabel(o.log), [&] { return discrepancy::runModelCheck(*model, mo); });
   discrepancy::mergeIntoAnalysisJson(j, mc);
   if (!readReport.clean()) j["model_check"]["import"] = readReport.summary();
   const auto* glider = dynamic_cast<const discrepancy::GliderCheckModel*>(model.get());

@@ -1,6 +1,7 @@
 #include "missionlog/mission_files.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -14,6 +15,13 @@
 
 namespace auv {
 namespace {
+
+bool sameUnitSpelling(const std::string& a, const std::string& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
 
 namespace fs = std::filesystem;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -287,7 +295,10 @@ MissionLog mergeMission(std::vector<MissionPart> parts, const ReadOptions& optio
           std::lower_bound(out.time.begin(), out.time.end(), part.log.time[i] + offset[k]) - out.time.begin());
     for (auto& c : part.log.channels) {
       auto hit = byName.find(c.name);
-      if (hit != byName.end() && out.channels[hit->second].unit != c.unit) {
+      // Units that differ only in letter case are one unit here: a Slocum's
+      // flight and science computers spell the same sensor's unit "Mbytes"
+      // and "mbytes", "NTU" and "ntu". No logger writes both mbar and Mbar.
+      if (hit != byName.end() && !sameUnitSpelling(out.channels[hit->second].unit, c.unit)) {
         std::string renamed = c.name + "_" + fs::path(part.file).stem().string();
         for (int s = 2; byName.count(renamed); ++s) renamed = c.name + "_" + std::to_string(s);
         detail::reportProblem(report, options, ReadProblemKind::kDuplicateColumn, {part.file, 0, 0}, c.name,

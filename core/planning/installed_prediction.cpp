@@ -94,7 +94,8 @@ InstalledPrediction predictInstalled(const VehicleProfile& v, const PreMissionPl
     Eigen::Vector3d moment = m.mass_kg * m.cg_m;
     for (std::size_t p = 0; p < out.add_kg.size(); ++p) moment += out.add_kg[p] * v.points[p].position_m;
     out.flight_pitch_deg =
-        flightPitchDeg(v, plan.flight_speed_mps, m.mass_kg + added, moment / (m.mass_kg + added), plan.at_points.front());
+        flightPitchDeg(v, plan.flight_speed_mps, m.mass_kg + added, moment / (m.mass_kg + added), plan.at_points.front(),
+                       plan.estimate.calibrated_hydrodynamics);  // the plan's own (calibrated) vehicle
     if (out.flight_pitch_deg) out.flight_pitch_in_band = std::abs(*out.flight_pitch_deg) <= spec.pitch_tolerance_deg + kDeg;
   }
   out.safe = true;

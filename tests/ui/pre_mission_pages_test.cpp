@@ -338,7 +338,7 @@ TEST_F(PreMissionPages, WorkOrderDrawsTheExpectedStringsOnOnePage) {
   const QString flight = QString("Pitch in flight at 2.0 m/s %1%2°")
                              .arg(*oracle.flight_pitch_after_deg > 0 ? "+" : "")
                              .arg(fixed(*oracle.flight_pitch_after_deg, 2));
-  EXPECT_NE(drawn.indexOf(flight), -1) << flight.toStdString();
+  EXPECT_NE(drawn.indexOf(flight), -1) << flight.toStdString() << "\n" << drawn.toStdString();
 
   // The same page as an image (golden) and as a PDF.
   const QImage img = renderWorkOrder(order, 96);

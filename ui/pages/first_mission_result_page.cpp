@@ -206,7 +206,7 @@ void FirstMissionResultPage::buildInstalledInputs(const FirstMissionReport& r) {
   installed_.clear();
   const VehicleProfile& v = *state_.vehicle;
   const bool g = state_.isGlider();
-  const std::vector<double> before = installedPerPoint(state_, r);
+  const std::vector<double> before = firstMissionInstalledKg(state_, r);
   const bool resumed = state_.actually_installed_kg.size() == v.points.size();
   for (std::size_t i = 0; i < v.points.size(); ++i) {
     const auto& p = v.points[i];
