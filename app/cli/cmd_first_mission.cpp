@@ -8,6 +8,7 @@
 #include "firstmission/crane_weighing_file.h"
 #include "firstmission/hugin_first_mission.h"
 #include "firstmission/slocum_first_mission.h"
+#include "history/first_mission_record.h"
 #include "history/configuration_id.h"
 #include "history/store.h"
 #include "history/timestamp.h"
@@ -143,25 +144,16 @@ void saveToHistory(const FirstMissionOpts& o, const FirstMissionRun& run) {
   c.vehicle_name = run.vehicle.name;
   c.created_at = now;
   store.addConfiguration(c);
-  Weighing w;
-  w.at = now;
-  w.method = r.method == "tank" ? WeighingMethod::kTank : WeighingMethod::kCrane;
-  w.inputs = run.inputs;
-  w.results = toJson(r);
-  store.addWeighing(o.config, w);
-  WaterCondition water;
-  water.measured_at = now;
-  water.temperature_degC = r.temperature_degC;
-  water.salinity_psu = r.salinity_psu;
-  water.depth_m = r.depth_m;
-  water.density_kg_m3 = r.density_kgm3;
-  water.source = "operator";
-  store.addWaterCondition(o.config, water);
-  Recommendation rec;
-  rec.at = now;
-  rec.policy = r.method == "tank" ? "tank" : o.policy;
-  rec.recommendation = toJson(r);
-  const RecordId rid = store.addRecommendation(o.config, rec);
+  FirstMissionRecord record;
+  record.tank = r.method == "tank";
+  record.inputs = run.inputs;
+  record.results = toJson(r);
+  record.temperature_degC = r.temperature_degC;
+  record.salinity_psu = r.salinity_psu;
+  record.depth_m = r.depth_m;
+  record.density_kg_m3 = r.density_kgm3;
+  record.policy = record.tank ? "tank" : o.policy;
+  const RecordId rid = recordFirstMission(store, o.config, record, now);
   if (r.method == "crane") {
     InstalledState st;
     st.installed_at = now;

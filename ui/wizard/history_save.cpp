@@ -5,6 +5,7 @@
 #include "analysis/analysis_report.h"
 #include "common/input_error.h"
 #include "firstmission/hugin_first_mission.h"
+#include "history/first_mission_record.h"
 #include "history/transaction.h"
 #include "wizard/session_json.h"
 
@@ -39,29 +40,17 @@ void saveFirstMissionToHistory(HistoryStore& store, const WizardState& s, TimePo
   Transaction tx(store.database());
   ensureConfiguration(store, s, now);
 
-  Weighing w;
-  w.at = now;
-  const bool tank = r.method == "tank";
-  w.method = tank ? WeighingMethod::kTank : WeighingMethod::kCrane;
-  w.inputs = tank ? tankWeighingToJson(s.tank, s.tank_water_salt) : craneInputToJson(s.crane, s.vehicle->id);
-  w.results = toJson(r);
-  store.addWeighing(s.configuration_id, w);
-
-  WaterCondition water;
-  water.measured_at = now;
-  water.temperature_degC = r.temperature_degC;
-  water.salinity_psu = r.salinity_psu;
-  water.depth_m = r.depth_m;
-  water.density_kg_m3 = r.density_kgm3;
-  water.source = "operator";
-  store.addWaterCondition(s.configuration_id, water);
-
-  Recommendation rec;
-  rec.at = now;
-  rec.policy = tank ? "tank" : "exact";
-  rec.recommendation = toJson(r);
-  rec.accepted = true;
-  const RecordId rec_id = store.addRecommendation(s.configuration_id, rec);
+  FirstMissionRecord record;
+  record.tank = r.method == "tank";
+  record.inputs = record.tank ? tankWeighingToJson(s.tank, s.tank_water_salt) : craneInputToJson(s.crane, s.vehicle->id);
+  record.results = toJson(r);
+  record.temperature_degC = r.temperature_degC;
+  record.salinity_psu = r.salinity_psu;
+  record.depth_m = r.depth_m;
+  record.density_kg_m3 = r.density_kgm3;
+  record.policy = record.tank ? "tank" : "exact";
+  record.accepted = true;
+  const RecordId rec_id = recordFirstMission(store, s.configuration_id, record, now);
 
   // What the technician says is installed now: the post-mission analysis
   // of the first mission starts from it.
