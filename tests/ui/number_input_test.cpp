@@ -171,6 +171,25 @@ TEST_F(NumberTyping, CraneSumCheckUsesTheTypedDecimals) {
   EXPECT_DOUBLE_EQ(wiz.state().crane.weighing.total_kg, 1565.7);
 }
 
+// A new user's crane page has both ropes at x = 0: no lever, no CG. Next
+// waits until the fore rope is typed forward of the aft rope, and the side
+// view says what to enter instead of drawing both ropes at the CB.
+TEST_F(NumberTyping, CraneNextWaitsForRopePositionsForwardAndAft) {
+  OperatorWizard wiz(makeDemoState(AUV_RESOURCE_DIR));
+  wiz.show();
+  wiz.next();
+  wiz.next();
+  ASSERT_EQ(wiz.currentId(), OperatorWizard::kCraneWeighing);
+  typeInto(find<NumberInput>(wiz, "rope_fore"), "0");
+  typeInto(find<NumberInput>(wiz, "rope_aft"), "0");
+  EXPECT_FALSE(wiz.button(QWizard::NextButton)->isEnabled());
+  typeInto(find<NumberInput>(wiz, "rope_fore"), "1.2");
+  typeInto(find<NumberInput>(wiz, "rope_aft"), "-1.3");
+  EXPECT_TRUE(wiz.button(QWizard::NextButton)->isEnabled());
+  typeInto(find<NumberInput>(wiz, "rope_aft"), "1.5");  // aft rope forward of the fore rope
+  EXPECT_FALSE(wiz.button(QWizard::NextButton)->isEnabled());
+}
+
 // Every numeric field of the HUGIN first-mission pages (crane, water, result).
 TEST_F(NumberTyping, EveryFieldOfTheHuginFirstMissionPages) {
   OperatorWizard wiz(makeDemoState(AUV_RESOURCE_DIR));

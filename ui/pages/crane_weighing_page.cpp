@@ -73,7 +73,10 @@ CraneWeighingPage::CraneWeighingPage(WizardState& state) : state_(state) {
   for (auto* s : scales_) connect(s, &NumberInput::valueChanged, this, [this] { updateSumCheck(); });
   connect(total_, &NumberInput::valueChanged, this, [this] { updateSumCheck(); });
   for (auto* s : {rope_fore_, rope_aft_, rope_y_}) {
-    connect(s, &NumberInput::valueChanged, this, [this] { updateSideView(); });
+    connect(s, &NumberInput::valueChanged, this, [this] {
+      updateSideView();
+      emit completeChanged();
+    });
   }
 }
 
@@ -142,7 +145,10 @@ void CraneWeighingPage::updateSumCheck() {
   emit completeChanged();
 }
 
-bool CraneWeighingPage::isComplete() const { return sum_ok_; }
+// The CG comes from the moment of the rope forces about the ropes' stations:
+// with the fore rope not forward of the aft one (both still 0 on a new
+// page) there is no lever, so Next waits for the rope positions too.
+bool CraneWeighingPage::isComplete() const { return sum_ok_ && rope_fore_->value() > rope_aft_->value(); }
 
 void CraneWeighingPage::cleanupPage() { store(); }
 

@@ -105,10 +105,12 @@ void CraneSideView::paintEvent(QPaintEvent*) {
   }
 
   // Where the ropes are, in the profile's x (forward positive).
-  const QString stations_text = tr("Ropes at x = %1 m (fore) and %2 m (aft); starboard and port scales hang one behind "
-                                   "the other.")
-                                    .arg(data_.rope_fore_x_m, 0, 'f', 3)
-                                    .arg(data_.rope_aft_x_m, 0, 'f', 3);
+  const QString stations_text =
+      data_.rope_fore_x_m > data_.rope_aft_x_m
+          ? tr("Ropes at x = %1 m (fore) and %2 m (aft); starboard and port scales hang one behind the other.")
+                .arg(data_.rope_fore_x_m, 0, 'f', 3)
+                .arg(data_.rope_aft_x_m, 0, 'f', 3)
+          : tr("Enter where the ropes are: the fore rope's x must be forward of (greater than) the aft rope's.");
   p.setPen(ink);
   p.drawText(QRectF(8, height() - line - 4, width() - 16, line), Qt::AlignLeft | Qt::AlignVCenter,
              fm.elidedText(stations_text, Qt::ElideRight, width() - 16));
