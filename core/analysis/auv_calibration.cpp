@@ -42,6 +42,32 @@ void rowsOf(const SteadyHydroCoefficients& c, double W, double rho_ref, const Ca
   b << -s.buoyancy_change_n * cc, -s.moment_offset_nm * cc;
 }
 
+// Covariance of a segment's two balance residuals (heave force, pitch
+// moment) from the standard errors of its five means, by central
+// differences at the parameters p.
+template <class P>
+Eigen::Matrix2d segmentCovariance(const SteadyHydroCoefficients& c, double W, double rho_ref,
+                                  const CalibrationSegment& s, const P& p) {
+  auto resid = [&](const std::array<double, 5>& v) {
+    Eigen::Matrix<double, 2, kCalibrationCount> Ai;
+    Eigen::Vector2d bi;
+    rowsOf(c, W, rho_ref, s, v, Ai, bi);
+    return Eigen::Vector2d(Ai * p - bi);
+  };
+  Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
+  for (int j = 0; j < 5; ++j) {
+    if (!(s.se[j] > 0.0)) continue;
+    std::array<double, 5> hi = s.v, lo = s.v;
+    hi[j] += s.se[j];
+    lo[j] -= s.se[j];
+    const Eigen::Vector2d d = 0.5 * (resid(hi) - resid(lo));
+    C += d * d.transpose();
+  }
+  C(0, 0) += 1e-6;  // 1 mN, 1 mN m floors: a noise-free segment keeps a finite weight
+  C(1, 1) += 1e-6;
+  return C;
+}
+
 struct Solved {
   bool ok = false;
   Eigen::VectorXd p;
@@ -63,23 +89,7 @@ Solved solve(const SteadyHydroCoefficients& c, double W, double rho_ref, const s
   Eigen::Vector2d b;
   for (Eigen::Index i = 0; i < n; ++i) {
     const CalibrationSegment& s = segs[static_cast<std::size_t>(i)];
-    auto resid = [&](const std::array<double, 5>& v) {
-      Eigen::Matrix<double, 2, kCalibrationCount> Ai;
-      Eigen::Vector2d bi;
-      rowsOf(c, W, rho_ref, s, v, Ai, bi);
-      return Eigen::Vector2d(Ai * p0 - bi);
-    };
-    Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
-    for (int j = 0; j < 5; ++j) {
-      if (!(s.se[j] > 0.0)) continue;
-      std::array<double, 5> hi = s.v, lo = s.v;
-      hi[j] += s.se[j];
-      lo[j] -= s.se[j];
-      const Eigen::Vector2d d = 0.5 * (resid(hi) - resid(lo));
-      C += d * d.transpose();
-    }
-    C(0, 0) += 1e-6;  // 1 mN, 1 mN m floors: a noise-free segment keeps a finite weight
-    C(1, 1) += 1e-6;
+    const Eigen::Matrix2d C = segmentCovariance(c, W, rho_ref, s, p0);
     const Eigen::Matrix2d Linv = Eigen::Matrix2d(C.llt().matrixL()).inverse();
     rowsOf(c, W, rho_ref, s, s.v, A, b);
     At.middleRows(2 * i, 2) = Linv * A;
@@ -204,23 +214,7 @@ Eigen::MatrixXd covarianceAfter(const SteadyHydroCoefficients& c, double W, doub
   Eigen::Matrix<double, 2, kCalibrationCount> A;
   Eigen::Vector2d b;
   for (const CalibrationSegment& s : planned) {
-    auto resid = [&](const std::array<double, 5>& v) {
-      Eigen::Matrix<double, 2, kCalibrationCount> Ai;
-      Eigen::Vector2d bi;
-      rowsOf(c, W, rho_ref, s, v, Ai, bi);
-      return Eigen::Vector2d(Ai * cal.p - bi);
-    };
-    Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
-    for (int j = 0; j < 5; ++j) {
-      if (!(s.se[j] > 0.0)) continue;
-      std::array<double, 5> hi = s.v, lo = s.v;
-      hi[j] += s.se[j];
-      lo[j] -= s.se[j];
-      const Eigen::Vector2d d = 0.5 * (resid(hi) - resid(lo));
-      C += d * d.transpose();
-    }
-    C(0, 0) += 1e-6;
-    C(1, 1) += 1e-6;
+    const Eigen::Matrix2d C = segmentCovariance(c, W, rho_ref, s, cal.p);
     rowsOf(c, W, rho_ref, s, s.v, A, b);
     info += A.transpose() * C.inverse() * A;
   }

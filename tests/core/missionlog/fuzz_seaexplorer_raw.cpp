@@ -5,12 +5,11 @@
 // of a navigation one; with neither bit 0 nor 1 the input is the whole file
 // (damaged and hostile gzip). Inflation is capped at 1 MiB. Checks
 // fuzz_checks.h on every log.
-#include <zlib.h>
-
 #include <cstdint>
 #include <string>
 
 #include "fuzz_checks.h"
+#include "gzip_test_bytes.h"
 #include "missionlog/seaexplorer_raw_reader.h"
 
 namespace {
@@ -18,19 +17,6 @@ constexpr const char* kHeader =
     "Timestamp;NavState;SecurityLevel;Heading;Declination;Pitch;Roll;Depth;Temperature;Pa;Lat;Lon;DesiredH;"
     "BallastCmd;BallastPos;LinCmd;LinPos;AngCmd;AngPos;Voltage;Altitude;\n";
 
-std::string gzip(const std::string& text) {
-  z_stream z{};
-  deflateInit2(&z, 1, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY);
-  std::string out(deflateBound(&z, static_cast<uLong>(text.size())) + 64, '\0');
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
-  z.avail_in = static_cast<uInt>(text.size());
-  z.next_out = reinterpret_cast<Bytef*>(out.data());
-  z.avail_out = static_cast<uInt>(out.size());
-  deflate(&z, Z_FINISH);
-  out.resize(z.total_out);
-  deflateEnd(&z);
-  return out;
-}
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -38,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::string bytes;
   if (data[0] & 1) bytes = kHeader;
   bytes.append(reinterpret_cast<const char*>(data) + 1, size - 1);
-  if (data[0] & 2) bytes = gzip(bytes);
+  if (data[0] & 2) bytes = auv::testing::gzipBytes(bytes);
   const std::string name = (data[0] & 4) ? "fuzz.7.pld1.raw.3.gz" : "fuzz.7.gli.sub.3.gz";
   auv::ReadOptions options;
   options.max_problems_per_kind = 3;
