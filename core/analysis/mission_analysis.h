@@ -13,6 +13,7 @@
 #include "analysis/auv_trim_estimation.h"
 #include "analysis/glider_flight.h"
 #include "analysis/glider_target.h"
+#include "analysis/profile_constants.h"
 #include "analysis/segments.h"
 #include "missionlog/mission_log.h"
 #include "vehicle/vehicle_profile.h"
@@ -59,11 +60,6 @@ struct AnalysisOptions {
 // does not match the profile's points.
 AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& vehicle, const AnalysisOptions& options = {});
 
-// Flight-model constants for a glider profile: its optional "flight_model"
-// section, else gliderflight's Slocum defaults (listed in `notes`).
-GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::vector<std::string>& notes);
-
-// Latitude from the log metadata (`latitude:`, `lat:` or `position: lat X ...`).
-std::optional<double> latitudeFromMetadata(const MissionLog& log);
+// gliderConstantsFromProfile and latitudeFromMetadata: analysis/profile_constants.h.
 
 }  // namespace auv::analysis
