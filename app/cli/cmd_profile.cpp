@@ -1,12 +1,15 @@
 // auvballast profile --from p1710100.nc --out sg171.json: a vehicle profile
-// made from a Seaglider's own per-dive file (core/vehicle/seaglider_calibration.h),
+// made from a Seaglider's own per-dive file (core/vehicle/seaglider_calibration.h)
+// read through the mission-log reader (MissionLog::seagliderConstants()),
 // the bundled seaglider profile as template. This file only maps flags.
 #include <iostream>
 #include <memory>
 
 #include "cli_context.h"
 #include "commands.h"
+#include "analysis/profile_constants.h"
 #include "common/input_error.h"
+#include "missionlog/log_reader.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/profile_loader.h"
 #include "vehicle/seaglider_calibration.h"
@@ -21,7 +24,10 @@ struct ProfileOpts {
 int runProfile(const ProfileOpts& o) {
   if (o.from.empty()) throw InputError("from", "missing", "give --from p<glider><dive>.nc (a Seaglider basestation per-dive file)");
   if (o.out.empty()) throw InputError("out", "missing", "give --out sgNNN.json");
-  const SeagliderCalibration cal = readSeagliderCalibration(o.from);
+  // The constants come from the log's metadata, as the NetCDF reader fills it.
+  ReadReport report;
+  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(o.from, ReadOptions{}, report);
+  const SeagliderCalibration cal = analysis::seagliderCalibrationOf(log, o.from);
   const nlohmann::json tpl = JsonReader::parseFile(vehiclesDir() + "/seaglider.json");
   const nlohmann::json p = seagliderProfile(cal, tpl);
   writeJson(p, o.out);

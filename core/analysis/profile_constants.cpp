@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "common/input_error.h"
 #include "common/units.h"
 #include "vehicle/json_reader.h"
 
@@ -40,6 +41,15 @@ std::optional<AuvTrimContext::PropellerLaw> propellerLawFromProfile(const Vehicl
   law.wake_fraction = num("wake_fraction", 0.0);
   if (!(law.diameter_m > 0.0) || !(law.c1 > 0.0)) return std::nullopt;
   return law;
+}
+
+SeagliderCalibration seagliderCalibrationOf(const MissionLog& log, const std::string& file) {
+  SeagliderCalibration c{file, log.seagliderConstants()};
+  for (const char* need : {"sg_cal_mass", "sg_cal_volmax"})
+    if (!c.has(need))
+      throw InputError("from", "'" + file + "' has no " + need + " (it is not a Seaglider basestation per-dive file)",
+                       "give a Seaglider per-dive file such as p1710100.nc, with its sg_cal_* and log_* variables");
+  return c;
 }
 
 std::optional<double> latitudeFromMetadata(const MissionLog& log) {

@@ -9,6 +9,7 @@
 #include "analysis/auv_trim_estimation.h"
 #include "analysis/glider_flight.h"
 #include "missionlog/mission_log.h"
+#include "vehicle/seaglider_calibration.h"
 #include "vehicle/vehicle_profile.h"
 
 namespace auv::analysis {
@@ -19,6 +20,12 @@ GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::v
 
 // The number at `pos` of a metadata text ("12.5 kg" -> 12.5), NaN if none.
 double parseNumberAfter(const std::string& s, std::size_t pos);
+
+// The Seaglider constants a log carries in its metadata
+// (MissionLog::seagliderConstants(): sg_cal_* and log_*), named after `file`
+// for messages. Throws InputError (field "from") when the log has no
+// sg_cal_mass or sg_cal_volmax (not a basestation per-dive file).
+SeagliderCalibration seagliderCalibrationOf(const MissionLog& log, const std::string& file);
 
 // Latitude from the log metadata (`latitude:`, `lat:` or `position: lat X ...`).
 std::optional<double> latitudeFromMetadata(const MissionLog& log);

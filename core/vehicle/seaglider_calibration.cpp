@@ -1,7 +1,5 @@
 #include "vehicle/seaglider_calibration.h"
 
-#include <netcdf.h>
-
 #include <filesystem>
 
 #include "common/input_error.h"
@@ -14,30 +12,6 @@ double SeagliderCalibration::get(const std::string& name) const {
     throw InputError(name, "is not in " + file, "use a basestation per-dive file (p<glider><dive>.nc) with its sg_cal_* and log_* variables",
                      {file, 0, 0});
   return it->second;
-}
-
-SeagliderCalibration readSeagliderCalibration(const std::string& path) {
-  SeagliderCalibration c;
-  c.file = path;
-  int id = 0;
-  if (nc_open(path.c_str(), NC_NOWRITE, &id) != NC_NOERR)
-    throw InputError("from", "cannot open '" + path + "' as NetCDF", "give a Seaglider per-dive file such as p1710100.nc");
-  int nv = 0;
-  nc_inq_nvars(id, &nv);
-  for (int v = 0; v < nv; ++v) {
-    char name[NC_MAX_NAME + 1] = {};
-    int nd = 0;
-    nc_type type = NC_NAT;
-    if (nc_inq_var(id, v, name, &type, &nd, nullptr, nullptr) != NC_NOERR || nd != 0) continue;
-    const std::string n = name;
-    if (n.rfind("sg_cal_", 0) != 0 && n.rfind("log_", 0) != 0) continue;
-    if (type != NC_DOUBLE && type != NC_FLOAT && type != NC_INT && type != NC_SHORT) continue;
-    double x = 0.0;
-    if (nc_get_var_double(id, v, &x) == NC_NOERR) c.values[n] = x;
-  }
-  nc_close(id);
-  for (const char* need : {"sg_cal_mass", "sg_cal_volmax"}) c.get(need);
-  return c;
 }
 
 nlohmann::json seagliderProfile(const SeagliderCalibration& c, const nlohmann::json& tpl) {

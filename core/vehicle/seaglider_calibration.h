@@ -3,10 +3,12 @@
 // per-dive NetCDF (p<glider><dive>.nc) carries them: the sg_cal_* flight
 // model (mass, volmax, vbdbias, hd_a/b/c/s, abs_compress, therm_expan,
 // temp_ref, rho0) and the log_* parameters that place the VBD and pitch
-// mass ($C_VBD, $VBD_MIN/MAX, $VBD_CNV, $C_PITCH, $PITCH_CNV, ...). Read here
-// with libnetcdf until the mission-log reader puts them into the log's
-// metadata. `seagliderProfile` turns them into a vehicle profile document
-// the technician can edit (resources/vehicles/seaglider.json is the template).
+// mass ($C_VBD, $VBD_MIN/MAX, $VBD_CNV, $C_PITCH, $PITCH_CNV, ...). The
+// mission-log reader puts them into the log's metadata
+// (MissionLog::seagliderConstants(); analysis::seagliderCalibrationOf builds
+// this struct from a log). `seagliderProfile` turns them into a vehicle
+// profile document the technician can edit (resources/vehicles/seaglider.json
+// is the template).
 #include <map>
 #include <string>
 
@@ -20,9 +22,6 @@ struct SeagliderCalibration {
   double get(const std::string& name) const;  // throws InputError naming the file and the variable
   bool has(const std::string& name) const { return values.count(name) > 0; }
 };
-
-// Throws InputError when the file cannot be opened or lacks sg_cal_mass / sg_cal_volmax.
-SeagliderCalibration readSeagliderCalibration(const std::string& nc_file);
 
 // Profile JSON for this glider from `template_profile` (the seaglider
 // template): mass, hull volume at the VBD set point (volmax + (C_VBD -

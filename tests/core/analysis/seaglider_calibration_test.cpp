@@ -1,5 +1,7 @@
-// A Seaglider profile from its own per-dive NetCDF: the values must be the
-// file's sg_cal_* / log_* scalars (as listed in the dataset's
+// A Seaglider profile from its own per-dive NetCDF, read through the
+// mission-log reader (the constants are the log's metadata,
+// MissionLog::seagliderConstants()): the values must be the file's
+// sg_cal_* / log_* scalars (as listed in the dataset's
 // flight-constants-per-dive.csv, written by an independent reader), and the
 // hull volume basestation's volmax + (C_VBD - VBD_MIN) VBD_CNV - vbdbias.
 #include <gtest/gtest.h>
@@ -8,7 +10,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "analysis/profile_constants.h"
 #include "common/input_error.h"
+#include "missionlog/log_reader.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/profile_loader.h"
 #include "vehicle/seaglider_calibration.h"
@@ -18,7 +22,9 @@ using namespace auv;
 TEST(SeagliderCalibration, ReadsTheConstantsOfDive100AndMakesALoadableProfile) {
   const std::string nc = std::string(AUV_SHARED_DIR) + "/data/real/seaglider-sg171-bay-of-bengal-2024/raw/p1710100.nc";
   if (!std::filesystem::exists(nc)) GTEST_SKIP() << "real recordings not present: " << nc;
-  const SeagliderCalibration c = readSeagliderCalibration(nc);
+  ReadReport rr;
+  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(nc, ReadOptions{}, rr);
+  const SeagliderCalibration c = analysis::seagliderCalibrationOf(log, nc);
   EXPECT_DOUBLE_EQ(c.get("sg_cal_mass"), 56.69);
   EXPECT_NEAR(c.get("sg_cal_volmax"), 55848.6, 0.05);  // the CSV lists it to 0.1 cm3
   EXPECT_NEAR(c.get("sg_cal_vbdbias"), 47.8019, 1e-4);
@@ -42,14 +48,17 @@ TEST(SeagliderCalibration, ReadsTheConstantsOfDive100AndMakesALoadableProfile) {
   std::remove(out.c_str());
 }
 
-TEST(SeagliderCalibration, RefusesAFileThatIsNotNetcdf) {
-  const std::string f = ::testing::TempDir() + "not_a_netcdf.nc";
-  std::ofstream(f) << "hello";
+TEST(SeagliderCalibration, RefusesALogWithoutSeagliderConstants) {
+  MissionLog log;
+  log.time = {0.0, 1.0, 2.0};
+  log.addChannel("depth", "m").values = {1.0, 2.0, 3.0};
+  log.setMetadata("sg_cal_mass", "52.1");  // no sg_cal_volmax
   try {
-    readSeagliderCalibration(f);
+    analysis::seagliderCalibrationOf(log, "slocum.csv");
     ADD_FAILURE() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.field(), "from");
+    EXPECT_NE(std::string(e.what()).find("sg_cal_volmax"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("slocum.csv"), std::string::npos) << e.what();
   }
-  std::remove(f.c_str());
 }
