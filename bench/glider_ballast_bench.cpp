@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -26,7 +28,12 @@
 #include "common/input_error.h"
 #include "discrepancy/synthetic_glider.h"
 #include "discrepancy/vehicle_check.h"
+#include "missionlog/interchange_csv.h"
 #include "missionlog/log_reader.h"
+#include "missionlog/mission_files.h"
+#include "analysis/profile_constants.h"
+#include "vehicle/json_reader.h"
+#include "vehicle/seaglider_calibration.h"
 #include "seawater/seawater.h"
 #include "vehicle/profile_loader.h"
 
@@ -74,6 +81,7 @@ Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool
   m.pump_dive_cm3 = {-250.0, -180.0};
   m.pump_climb_cm3 = {250.0, 200.0};
   const MissionLog log = synthesizeGliderLog(t, m);
+  if (const char* dump = std::getenv("GLIDER_BENCH_DUMP")) writeInterchangeCsv(log, std::filesystem::path(dump));
 
   // Target: deeper and colder than the log's mean water.
   analysis::GliderTarget target;
@@ -88,7 +96,9 @@ Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool
   const double truthAdd = analysis::gliderMassToAddKg(V0, c.compressibility_per_dbar, c.thermal_expansion_per_degC,
                                                       c.reference_temperature_degC, target, mEnd);
 
-  const auto model = makeCheckModel(log, v, AUV_RESOURCE_DIR);
+  CheckSetup setup;
+  if (const char* e = std::getenv("GLIDER_BENCH_FIT_LIFT")) setup.glider.fit_lift_slope = std::string(e) == "1";
+  const auto model = makeCheckModel(log, v, AUV_RESOURCE_DIR, setup);
   const ModelCheckResult r = runModelCheck(*model);
   const auto& gm = dynamic_cast<const GliderCheckModel&>(*model);
   const GliderBallastAnswer a = gliderBallastAnswer(gm, r, target);
@@ -117,9 +127,10 @@ Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool
   o.err_joint_g = a.mass_to_add_g - 1000 * truthAdd;
   o.err_analysis_g = ar.mass_to_add_g.value - 1000 * truthAdd;
   const double scale = k.term == "pitch_sensor_bias" ? 180.0 / M_PI : 1.0;
-  std::printf("%-21s seed %2llu %-7s Cd0 %.3f a %.2f Cd1 %5.2f | found %-40s value %10.3g truth %10.3g | add truth %+7.1f g  "
+  const bool aborted = log.metadataValue("truth_abort_time_s") != nullptr;
+  std::printf("%-21s seed %2llu %-7s%s Cd0 %.3f a %.2f Cd1 %5.2f | found %-40s value %10.3g truth %10.3g | add truth %+7.1f g  "
               "joint %+6.1f (+-%4.1f)  analysis %+6.1f g\n",
-              k.term.empty() ? "control" : k.term.c_str(), static_cast<unsigned long long>(seed), deep ? "deep" : "shallow",
+              k.term.empty() ? "control" : k.term.c_str(), static_cast<unsigned long long>(seed), deep ? "deep" : "shallow", aborted ? " ABORT" : "      ",
               t.Cd0, c.lift_slope_per_rad, c.induced_drag_per_rad2, found.empty() ? "-" : found.c_str(), fitted * scale,
               k.value * scale, 1000 * truthAdd, o.err_joint_g, a.mass_to_add_sigma_g, o.err_analysis_g);
   if (std::getenv("GLIDER_BENCH_VERBOSE") && ((!k.term.empty() && !o.top1) || std::abs(o.err_joint_g) > 12)) {
@@ -127,12 +138,14 @@ Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool
       std::printf("    candidate %-22s %-50s value %10.3g sigma %9.3g t %6.2f incl %.2f r2 %.3f\n", cr.id.c_str(), cr.status.c_str(),
                   cr.value, cr.sigma, cr.t_value, cr.inclusion_probability, cr.nuisance_r2);
     for (const auto& w : r.warnings) std::printf("    warning %s\n", w.c_str());
+    std::printf("    log %.2f h, samples %zu, units %d, fit reference to end %.2f h, truth mid to end %.2f h\n", log.duration() / 3600,
+                r.samples, r.units, a.hours_to_end, (log.time.back() - meta(log, "truth_mass_mid_time_s")) / 3600.0);
   }
   std::fflush(stdout);
   return o;
 }
 
-void synthetic(const VehicleProfile& v) {
+void synthetic(const VehicleProfile& v, int reps) {
   std::puts("(a) concealed-effect glider logs, truth flight constants off nominal; target deeper and colder than the log");
   std::puts("    errors = answer - truth of the grams to add for neutral at the target (pump at zero, mass at log end)");
   const std::vector<Case> cases = {{"hull_compressibility", 4e-6}, {"hull_compressibility", 7e-6},
@@ -142,10 +155,13 @@ void synthetic(const VehicleProfile& v) {
                                    {"", 0.0}, {"", 0.0}};
   int effects = 0, top1 = 0, within = 0, controls = 0, falseOnControls = 0, n = 0;
   double sumJ = 0, worstJ = 0, sumA = 0, worstA = 0;
-  std::uint64_t seed = 1;
-  for (const Case& k : cases) {
-    for (int rep = 0; rep < 2; ++rep, ++seed) {
-      const Outcome o = runCase(v, k, seed, rep == 1);
+  // Seeds 1..20 are the original two per case (shallow, deep); further
+  // pairs use seeds 101.., 201.., ... so the first 20 logs stay the same.
+  for (std::size_t ci = 0; ci < cases.size(); ++ci) {
+    const Case& k = cases[ci];
+    for (int rep = 0; rep < reps; ++rep) {
+      const std::uint64_t seed = 100 * static_cast<std::uint64_t>(rep / 2) + 1 + 2 * ci + static_cast<std::uint64_t>(rep % 2);
+      const Outcome o = runCase(v, k, seed, rep % 2 == 1);
       ++n;
       sumJ += std::abs(o.err_joint_g);
       worstJ = std::max(worstJ, std::abs(o.err_joint_g));
@@ -161,7 +177,7 @@ void synthetic(const VehicleProfile& v) {
       }
     }
   }
-  std::printf("\nSUMMARY (a): %d effect logs, %d controls\n", effects, controls);
+  std::printf("\nSUMMARY (a): %d effect logs, %d controls (%d seeds per case, half shallow, half deep)\n", effects, controls, reps);
   std::printf("  top-1 right term              %d / %d\n", top1, effects);
   std::printf("  value within 30 %%             %d / %d (%.0f %%; target >= 90 %%)\n", within, effects, 100.0 * within / effects);
   std::printf("  false terms on controls       %d (target 0)\n", falseOnControls);
@@ -176,10 +192,15 @@ struct RealResult {
   nlohmann::json plan;
 };
 
+RealResult runReal(const MissionLog& log, const VehicleProfile& v);
+
 RealResult runReal(const std::string& file, const VehicleProfile& v) {
-  RealResult out;
   ReadReport rr;
-  const MissionLog log = LogReaderRegistry::withBuiltinReaders().read(file, ReadOptions{}, rr);
+  return runReal(LogReaderRegistry::withBuiltinReaders().read(file, ReadOptions{}, rr), v);
+}
+
+RealResult runReal(const MissionLog& log, const VehicleProfile& v) {
+  RealResult out;
   analysis::AnalysisOptions ao;
   ao.classic = false;
   const analysis::AnalysisReport ar = analysis::analyzeMission(log, v, ao);
@@ -226,6 +247,87 @@ VehicleProfile variant(const VehicleProfile& base, double mass_kg, double kappa_
   return v;
 }
 
+// The first number after "NAME =" on a line of a basestation sg_calib_constants.m.
+double calibConstant(const std::string& file, const std::string& name) {
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto k = line.find_first_not_of(" \t");
+    if (k == std::string::npos || line.compare(k, name.size(), name) != 0) continue;
+    const auto eq = line.find('=', k + name.size());
+    if (eq == std::string::npos || line.find_first_not_of(" \t", k + name.size()) != eq) continue;
+    return std::strtod(line.c_str() + eq + 1, nullptr);
+  }
+  return NAN;
+}
+
+// SG171 from its raw basestation files: the profile made from the log's own
+// metadata (sg_cal_* / log_* of dive 100, as `auvballast profile --from`
+// does), our answer (mass to add, C_VBD, lead) beside the same answer
+// computed with basestation's per-dive flight-model constants
+// (flight-constants-per-dive.csv: V = (volmax + (C_VBD - VBD_MIN) VBD_CNV -
+// vbdbias) exp(-abs_compress p + therm_expan (T - temp_ref))) at our target.
+template <class Show>
+void sg171(const std::string& d, const VehicleProfile& bundled, const Show& show) {
+  std::puts("SG171 (Seaglider, Bay of Bengal, 10 dives to 505 m): profile from the log's own sg_cal_* / log_* (dive 100)");
+  if (!std::filesystem::exists(d + "raw")) {
+    std::printf("  %sraw absent: the interchange CSV with the bundled seaglider profile instead\n", d.c_str());
+    show(runReal(d + "sg171-dives100-109.csv", bundled));
+    return;
+  }
+  ReadReport rr;
+  const MissionLog log = readMission({d + "raw"}, ReadOptions{}, rr);
+  const SeagliderCalibration cal = analysis::seagliderCalibrationOf(log, d + "raw");
+  const std::string tmp = (std::filesystem::temp_directory_path() / "glider_bench_sg171.json").string();
+  std::ofstream(tmp) << seagliderProfile(cal, JsonReader::parseFile(std::string(AUV_RESOURCE_DIR) + "/vehicles/seaglider.json")).dump(2);
+  const VehicleProfile v = loadVehicleProfile(tmp);
+  std::filesystem::remove(tmp);
+  const RealResult r = runReal(log, v);
+  show(r);
+  // Basestation per dive at our target.
+  const auto target = nlohmann::json::parse(r.target);
+  const double rho = target["density_kgm3"].get<double>(), p = target["pressure_dbar"].get<double>(),
+               T = target["temperature_degC"].get<double>();
+  const double massM = calibConstant(d + "raw/sg_calib_constants.m", "mass");
+  std::printf("  mass: log sg_cal_mass %.3f kg (profile %.3f kg) vs sg_calib_constants.m mass = %.3f kg\n", cal.get("sg_cal_mass"),
+              v.mass_kg, massM);
+  std::ifstream csv(d + "flight-constants-per-dive.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  std::vector<std::string> names;
+  for (std::size_t a = 0, b; a <= header.size(); a = b + 1) {
+    b = header.find(',', a);
+    if (b == std::string::npos) b = header.size();
+    names.push_back(header.substr(a, b - a));
+  }
+  double lo = INFINITY, hi = -INFINITY, vlo = INFINITY, vhi = -INFINITY;
+  while (std::getline(csv, line)) {
+    std::map<std::string, double> k;
+    std::size_t i = 0;
+    for (std::size_t a = 0, b; a <= line.size() && i < names.size(); a = b + 1, ++i) {
+      b = line.find(',', a);
+      if (b == std::string::npos) b = line.size();
+      k[names[i]] = std::strtod(line.substr(a, b - a).c_str(), nullptr);
+    }
+    const double V0 = k["sg_cal_volmax"] + (k["log_C_VBD"] - k["log_VBD_MIN"]) * k["log_VBD_CNV"] - k["sg_cal_vbdbias"];
+    const double V = V0 * std::exp(-k["sg_cal_abs_compress"] * p + k["sg_cal_therm_expan"] * (T - k["sg_cal_temp_ref"]));
+    const double add = 1000.0 * (rho * V * 1e-6 - massM);
+    const double cvbd = k["log_C_VBD"] + (-add / rho * 1000.0) / k["log_VBD_CNV"];
+    std::printf("  basestation dive %3.0f: V0 %.1f cm3, abs_compress %.3g: add %+6.0f g at the target -> C_VBD %4.0f, lead 0 g\n",
+                k["dive"], V0, k["sg_cal_abs_compress"], add, cvbd);
+    lo = std::min(lo, add);
+    hi = std::max(hi, add);
+    vlo = std::min(vlo, cvbd);
+    vhi = std::max(vhi, cvbd);
+  }
+  const auto& sg = r.plan.contains("seaglider") ? r.plan["seaglider"] : nlohmann::json::object();
+  std::printf("  side by side: hd_b %.4f vs 0.0224; V0 %.1f cm3 vs 55266.0 .. 55309.5; add %+.0f g (model check %+.0f) vs basestation "
+              "%+.0f .. %+.0f g; C_VBD %s vs %.0f .. %.0f; lead %s g vs 0\n",
+              r.Cd0, r.V0 * 1e6, r.add_analysis, r.add_joint, lo, hi,
+              sg.contains("C_VBD_new") ? sg["C_VBD_new"].dump().c_str() : "-", vlo, vhi,
+              sg.contains("lead_change_g") ? sg["lead_change_g"].dump().c_str() : "-");
+}
+
 void real(const VehicleProfile& slocum, const VehicleProfile& seaglider) {
   const std::string dir = std::string(AUV_SHARED_DIR) + "/data/real/";
   if (!std::filesystem::exists(dir)) {
@@ -261,15 +363,7 @@ void real(const VehicleProfile& slocum, const VehicleProfile& seaglider) {
     std::printf("  side by side: Cd0 %.4f vs 0.0952; V0 %.6f vs 0.058364 m3 (neutral density %.2f vs 1028.0 kg/m3)\n", r.Cd0, r.V0,
                 60.0 / r.V0);
   }
-  {
-    std::puts("SG171 (Seaglider, Bay of Bengal, 10 dives to 505 m): bundled seaglider profile (sg_cal_* of dive 100),");
-    std::puts("  reference per dive (flight-constants-per-dive.csv): V0 = volmax + (C_VBD - VBD_MIN) VBD_CNV - vbdbias = "
-              "55266.0 .. 55309.5 cm3 (vbdbias 47.8 .. 4.3), hd_b 0.0224, abs_compress 8.6e-7 .. 1.3e-6");
-    const RealResult r = runReal(dir + "seaglider-sg171-bay-of-bengal-2024/sg171-dives100-109.csv", seaglider);
-    show(r);
-    std::printf("  side by side: hd_b %.4f vs 0.0224; V0 %.1f cm3 vs 55266.0 .. 55309.5 cm3 (vbdbias equivalent %.1f cm3)\n",
-                r.Cd0, r.V0 * 1e6, 55313.8 - r.V0 * 1e6);
-  }
+  sg171(dir + "seaglider-sg171-bay-of-bengal-2024/", seaglider, show);
   {
     std::puts("SeaExplorer SEA046 (Calvert line, 5 yos to 136 m): no published flight constants; slocum form, mass 59 kg ASSUMED");
     const VehicleProfile v = variant(slocum, 59.0, 5e-6, 7e-5, nlohmann::json::object());
@@ -287,13 +381,18 @@ int main(int argc, char** argv) {
   const std::string res = AUV_RESOURCE_DIR;
   const VehicleProfile slocum = loadVehicleProfile(res + "/vehicles/slocum_g2.json");
   const bool onlyReal = argc > 1 && std::string(argv[1]) == "--real";
+  const bool onlySynthetic = argc > 1 && std::string(argv[1]) == "--synthetic";
   if (argc > 2 && std::string(argv[1]) == "--case") {
     // One case: --case TERM VALUE SEED deep|shallow (debugging).
     runCase(slocum, {std::string(argv[2]) == "control" ? "" : argv[2], std::stod(argv[3])}, std::stoull(argv[4]),
             std::string(argv[5]) == "deep");
     return 0;
   }
-  if (!onlyReal) synthetic(slocum);
-  real(slocum, loadVehicleProfile(res + "/vehicles/seaglider.json"));
+  // --reps N: seeds per case (default 6: 48 effect logs, 12 controls).
+  int reps = 6;
+  for (int i = 1; i + 1 < argc; ++i)
+    if (std::string(argv[i]) == "--reps") reps = std::max(1, std::atoi(argv[i + 1]));
+  if (!onlyReal) synthetic(slocum, reps);
+  if (!onlySynthetic) real(slocum, loadVehicleProfile(res + "/vehicles/seaglider.json"));
   return 0;
 }

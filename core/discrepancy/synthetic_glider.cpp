@@ -110,8 +110,25 @@ MissionLog synthesizeGliderLog(const SyntheticGliderTruth& truth, const Syntheti
   const double ap = std::exp(-m.step_s / 60.0);
   const auto every = std::max<long>(1, std::lround(m.sample_interval_s / m.step_s));
   long k = 0;
+  double stallZ = 0.0, stallT = 0.0, abortT = -1.0;
   for (double t = 0.0; t <= tEnd; t += m.step_s, ++k) {
+    // Stall abort: no progress for stall_abort_s in a dive or climb.
+    if (phase != kSurface) {
+      if (std::abs(z - stallZ) >= m.stall_min_progress_m) {
+        stallZ = z;
+        stallT = t;
+      } else if (t - stallT > m.stall_abort_s) {
+        if (abortT >= 0.0) break;  // the abort climb stalls too: the log ends
+        abortT = t;
+        phase = kClimb;
+        pumpCmd = m.abort_pump_cm3;
+        thetaCmd = units::degToRad(cyc(m.pitch_climb_deg, 0));
+        stallT = t;
+      }
+    }
     // Mission logic.
+    const auto prevPhase = phase;
+    if (abortT >= 0.0 && phase == kClimb && z <= 2.0) break;  // surfaced after the abort: the log ends
     if (phase == kSurface) {
       surfaceLeft -= m.step_s;
       z = 0.0;
@@ -131,6 +148,10 @@ MissionLog synthesizeGliderLog(const SyntheticGliderTruth& truth, const Syntheti
       surfaceLeft = m.surface_s;
       pumpCmd = 250.0;
       ++yo;
+    }
+    if (phase != prevPhase) {
+      stallZ = z;
+      stallT = t;
     }
     // Actuators and environment.
     const double dp = std::clamp(pumpCmd - pump, -m.pump_rate_cm3_per_s * m.step_s, m.pump_rate_cm3_per_s * m.step_s);
@@ -166,6 +187,7 @@ MissionLog synthesizeGliderLog(const SyntheticGliderTruth& truth, const Syntheti
     }
     if (phase != kSurface) z = std::max(0.0, z - (wThrough + truth.vertical_current_mps + wiw) * m.step_s);
   }
+  if (abortT >= 0.0) log.metadata.push_back({"truth_abort_time_s", sim::formatNumber(abortT)});
   for (std::size_t i = 0; i < 8; ++i) {
     LogChannel& ch = log.addChannel(names[i], unitsOf[i]);
     ch.values = col[i];

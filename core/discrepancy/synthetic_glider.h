@@ -7,8 +7,9 @@
 // sensor noise, a ballast error, and one or more "truth" effects the
 // analysis model may lack: hull compressibility and thermal expansion beyond
 // the profile's, mass drift, a pitch-sensor bias, a depth-sensor offset and a
-// vertical current. The result is a MissionLog in the interchange format
-// with the truth in its metadata.
+// vertical current. A glide that stalls aborts the mission as a glider does.
+// The result is a MissionLog in the interchange format with the truth in its
+// metadata (truth_abort_time_s when the mission aborted).
 #include <cstdint>
 #include <vector>
 
@@ -40,6 +41,15 @@ struct SyntheticGliderMission {
   double pitch_wander_deg = 1.0;       // AR(1) wander of the true pitch about its set point
   double pitch_time_constant_s = 15.0;
   double pump_rate_cm3_per_s = 10.0;
+  // The glider's stall abort (Slocum "no depth change", Seaglider's
+  // equivalent): a dive or climb that makes less than this progress in this
+  // long aborts the mission: pump to abort_pump_cm3, climb to the surface,
+  // and the log ends there (or when the abort climb stalls too). Without it
+  // the steady-glide truth would hover for hours with w = 0, which no glider
+  // does, and the log would end hours after its last glide.
+  double stall_abort_s = 600.0;
+  double stall_min_progress_m = 5.0;
+  double abort_pump_cm3 = 300.0;
   // Water: tanh thermocline whose depth heaves from yo to yo (internal waves).
   double surface_temperature_degC = 18.0, deep_temperature_degC = 8.0;
   double surface_salinity_psu = 34.6, deep_salinity_psu = 35.2;
