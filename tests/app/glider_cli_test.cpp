@@ -109,4 +109,38 @@ TEST(GliderCli, SeagliderProfileFromItsOwnFileAndAVbdAnswer) {
   std::remove(out.c_str());
 }
 
+// model-check on the raw dive folder with the profile made from its own
+// files, then plan from that report: a lead / C_VBD answer. Oracle: the same
+// grams computed with basestation's flight-model constants of dive 100
+// (flight-constants-per-dive.csv, written by an independent reader):
+// V = (volmax + (C_VBD - VBD_MIN) VBD_CNV - vbdbias) exp(-abs_compress p + therm_expan (T - temp_ref)).
+TEST(GliderCli, SeagliderModelCheckAndPlanGiveCVbdAndLeadFromTheRawDives) {
+  const std::string dir = std::string(AUV_SHARED_DIR) + "/data/real/seaglider-sg171-bay-of-bengal-2024/";
+  if (!std::filesystem::exists(dir + "raw")) GTEST_SKIP() << "real recordings not present: " << dir << "raw";
+  const std::string prof = tempPath("sg171_mc.json"), report = tempPath("sg171_mc_report.json");
+  ASSERT_EQ(runCli("profile --from " + dir + "raw/p1710100.nc --out " + prof).code, 0);
+  const auto mc = runCli("model-check --vehicle " + prof + " --log " + dir + "raw --json " + report);
+  ASSERT_EQ(mc.code, 0) << mc.err;
+  const auto p = runCli("plan --vehicle " + prof + " --report " + report + " --json -");
+  ASSERT_EQ(p.code, 0) << p.err;
+  const auto plan = nlohmann::json::parse(p.out);
+  const auto& s = plan["seaglider"];
+  ASSERT_TRUE(s.is_object()) << plan.dump();
+  const double add_g = plan["mass_to_add_g"].get<double>();
+  const double rho = plan["target"]["density_kgm3"].get<double>(), pt = plan["target"]["pressure_dbar"].get<double>(),
+               Tt = plan["target"]["temperature_degC"].get<double>();
+  // Dive 100 in flight-constants-per-dive.csv: volmax 55848.6, C_VBD 2680,
+  // VBD_MIN 500, VBD_CNV -0.2453, vbdbias 47.8019, abs_compress 8.63627e-07,
+  // therm_expan 7.05e-05, temp_ref 15; sg_calib_constants.m: mass 56.690 kg.
+  const double V = (55848.6 + (2680 - 500) * -0.2453 - 47.8019) * std::exp(-8.63627e-07 * pt + 7.05e-05 * (Tt - 15.0));
+  const double basestation_g = 1000.0 * (rho * V * 1e-6 - 56.690);
+  EXPECT_NEAR(add_g, basestation_g, 25.0) << "basestation " << basestation_g;
+  // Within the VBD range no lead; C_VBD moves by the displaced volume, 0.2453 cm3 per count.
+  EXPECT_EQ(s["lead_change_g"].get<double>(), 0.0);
+  EXPECT_EQ(s["C_VBD_old"].get<double>(), 2680.0);
+  EXPECT_NEAR(s["C_VBD_new"].get<double>(), std::round(2680 + (-add_g / rho * 1000.0) / -0.2453), 1.0);
+  std::remove(prof.c_str());
+  std::remove(report.c_str());
+}
+
 }  // namespace auv
