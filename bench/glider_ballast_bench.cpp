@@ -7,6 +7,11 @@
 //   per log: hidden term, top-1 found, value and truth, mass-to-add error of
 //   the model check's joint answer and of the analysis alone;
 //   summary: top-1, value within 30 %, mean/worst |error|, false terms on controls.
+// Usage: glider_ballast_bench [--synthetic | --real] [--reps N]
+//        glider_ballast_bench --case TERM VALUE SEED deep|shallow
+// Environment: GLIDER_BENCH_VERBOSE=1 (candidates of a miss), GLIDER_BENCH_FIT_LIFT=1
+// (lift slope fitted), GLIDER_BENCH_NO_ABORT=1 (the earlier truth that hovers
+// after a stall), GLIDER_BENCH_DUMP=FILE (write the case's log).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -80,6 +85,8 @@ Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool
   m.pitch_climb_deg = {24.0, 17.0, 28.0};
   m.pump_dive_cm3 = {-250.0, -180.0};
   m.pump_climb_cm3 = {250.0, 200.0};
+  // GLIDER_BENCH_NO_ABORT=1: the earlier truth that hovers at w = 0 after a stall (for before/after figures).
+  if (const char* e = std::getenv("GLIDER_BENCH_NO_ABORT"); e && std::string(e) == "1") m.stall_abort_s = INFINITY;
   const MissionLog log = synthesizeGliderLog(t, m);
   if (const char* dump = std::getenv("GLIDER_BENCH_DUMP")) writeInterchangeCsv(log, std::filesystem::path(dump));
 
