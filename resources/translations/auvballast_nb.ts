@@ -3070,8 +3070,8 @@
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" />
-        <source> × the profile&apos;s</source>
-        <translation> × profilens</translation>
+        <source>%1 = profile</source>
+        <translation>%1 = profil</translation>
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" />
@@ -3312,6 +3312,11 @@
         <location filename="../../ui/pages/pre_mission_page.cpp" />
         <source>°</source>
         <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" />
+        <source>Net buoyancy &lt;b&gt;%1&lt;/b&gt; (%2) in %3 kg/m³ water at %4 m (%5 °C, %6 PSU).</source>
+        <translation>Netto oppdrift &lt;b&gt;%1&lt;/b&gt; (%2) i %3 kg/m³ vann på %4 m (%5 °C, %6 PSU).</translation>
     </message>
     <message>
         <location filename="../../ui/pages/pre_mission_page.cpp" />

@@ -267,7 +267,7 @@ void AdjustmentPage::showCalibration() {
   manoeuvre_->setVisible(!legs.isEmpty());
   if (!legs.isEmpty())
     manoeuvre_->setText(tr("<b>Calibration manoeuvre</b> to add to the next mission: %1")
-                            .arg(legs.join("; ").toHtmlEscaped()));
+                            .arg(legs.join(". ").toHtmlEscaped()));
 }
 
 void AdjustmentPage::updateProgress() {

@@ -180,6 +180,14 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
   });
 }
 
+void DeviationPlotsPage::showEvent(QShowEvent* e) {
+  // Back from the model-check page: the estimate the plan uses may have
+  // changed with the terms accepted there (QWizard does not initialise a
+  // page again on Back).
+  if (state_.log) showAnalysis();
+  QWizardPage::showEvent(e);
+}
+
 int DeviationPlotsPage::nextId() const { return OperatorWizard::kModelCheck; }
 
 void DeviationPlotsPage::buildPlot(PlotData& p, const char* measured, const char* commanded) {

@@ -135,17 +135,18 @@ ModelCheckPage::ModelCheckPage(WizardState& state) : state_(state) {
   crow->addWidget(difference_);
   crow->addStretch(1);
   auto* bottom = new QHBoxLayout;
-  auto* right = new QVBoxLayout;
-  right->addWidget(calibration_, 1);
-  right->addWidget(scroll, 1);
-  bottom->addWidget(terms_, 3);
-  bottom->addLayout(right, 2);
+  // Left: the terms to accept over what was calibrated; right: where.
+  auto* left = new QVBoxLayout;
+  left->addWidget(terms_, 2);
+  left->addWidget(calibration_, 3);
+  bottom->addLayout(left, 3);
+  bottom->addWidget(scroll, 2);
   auto* lay = new QVBoxLayout(this);
   lay->setSpacing(4);
   lay->addLayout(top);
   lay->addWidget(summary_);
   lay->addLayout(crow);
-  lay->addWidget(chart_view_, 3);
+  lay->addWidget(chart_view_, 2);
   lay->addLayout(bottom, 2);
   lay->addWidget(save_status_);
   setTabOrder(channel_, difference_);

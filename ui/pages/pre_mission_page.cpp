@@ -251,8 +251,8 @@ void PreMissionPage::showBasis() {
                                                           : tr("too heavy");
   QString text;
   if (basis_->start.physical) {
-    text = tr("Net buoyancy <b>%1 ± %2 kg</b> (%3) in %4 kg/m³ water at %5 m (%6 °C, %7 PSU).")
-               .arg(signedFixed(e.net_buoyancy_kg, g ? 3 : 2), fixed(e.net_buoyancy_sigma_kg, g ? 3 : 2), state)
+    text = tr("Net buoyancy <b>%1</b> (%2) in %3 kg/m³ water at %4 m (%5 °C, %6 PSU).")
+               .arg(EstimateText::valueSigma(true, e.net_buoyancy_kg, e.net_buoyancy_sigma_kg, g ? 3 : 2, tr(" kg")), state)
                .arg(e.water.density_kgm3, 0, 'f', 2)
                .arg(e.depth_m, 0, 'f', 0)
                .arg(e.water.temperature_degC, 0, 'f', 2)

@@ -25,6 +25,7 @@ QLabel* resultLabel(const char* name) {
 // "mean ± 95 % half-width unit", or "n/a".
 QString meanText(const analysis::MeanEstimate& m, int decimals, const QString& unit, bool sign = true) {
   if (!m.valid() || !std::isfinite(m.mean)) return AnalysisSummary::tr("n/a");
+  decimals = EstimateText::decimalsFor(m.ci95, decimals);  // a small interval is not "± 0.00"
   const QString v = sign ? signedFixed(m.mean, decimals) : fixed(m.mean, decimals);
   const QString ci = std::isfinite(m.ci95) ? QStringLiteral(" ± %1").arg(fixed(m.ci95, decimals)) : QString();
   return v + ci + unit;

@@ -1,23 +1,29 @@
 #include "widgets/calibration_table.h"
 
 #include <QHeaderView>
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 namespace auv::ui {
 namespace {
 
-// Constants span 1e-5 (a torque per rpm²) to tens: significant digits.
-QString sig(double v, int digits) { return QString::number(v, 'g', digits); }
+// Constants span 1e-5 (a torque per rpm²) to thousands: significant digits,
+// never an exponent for a number with more integer digits than that.
+QString sig(double v, int digits) {
+  if (std::abs(v) >= 1.0) digits = std::max(digits, static_cast<int>(std::floor(std::log10(std::abs(v)))) + 1);
+  return QString::number(v, 'g', digits);
+}
 
 // The unit as a technician reads it; BG is reported in m and shown in mm.
 struct Shown {
   double scale = 1.0;
   QString unit;
+  bool relative = false;  // a multiple of the profile's value: the profile's is 1
 };
 Shown shownUnit(const std::string& id, const std::string& unit) {
   if (unit == "m") return {1000.0, CalibrationTable::tr(" mm")};
-  if (unit == "1" || unit == "x profile") return {1.0, CalibrationTable::tr(" × the profile's")};
+  if (unit == "1" || unit == "x profile") return {1.0, QString(), true};
   if (unit == "nondimensional" || unit.empty()) return {1.0, QString()};
   if (unit == "deg") return {1.0, QStringLiteral("°")};
   if (unit == "N*m/rpm^2") return {1.0, QStringLiteral(" N·m/rpm²")};
@@ -35,7 +41,10 @@ CalibrationRow makeRow(const std::string& id, const std::string& unit, double va
   r.value = std::isfinite(value) && std::isfinite(sigma) && sigma > 0.0
                 ? CalibrationTable::tr("%1 ± %2%3").arg(sig(value * s.scale, 3), sig(sigma * s.scale, 2), s.unit)
                 : CalibrationTable::tr("not known");
-  r.profile = std::isfinite(profile) ? sig(profile * s.scale, 3) + s.unit : CalibrationTable::tr("not given");
+  // The profile's value in the value's unit (said once, beside the value).
+  r.profile = !std::isfinite(profile) ? CalibrationTable::tr("not given")
+              : s.relative             ? CalibrationTable::tr("%1 = profile").arg(sig(profile, 3))
+                                       : sig(profile * s.scale, 3);
   r.identified = identified;
   return r;
 }
@@ -51,7 +60,11 @@ CalibrationTable::CalibrationTable(QWidget* parent) : QTableWidget(0, 4, parent)
   setHorizontalHeaderLabels({tr("Calibrated constant"), tr("Value ± σ"), tr("Profile"), tr("From")});
   verticalHeader()->hide();
   verticalHeader()->setDefaultSectionSize(22);
-  horizontalHeader()->setStretchLastSection(true);
+  // The name takes what the numbers leave (elided; the tooltip has it whole).
+  horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  setTextElideMode(Qt::ElideRight);
+  setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   setEditTriggers(QAbstractItemView::NoEditTriggers);
   setSelectionMode(QAbstractItemView::NoSelection);
   setFocusPolicy(Qt::NoFocus);  // read only: Tab goes on to the next field
@@ -71,12 +84,13 @@ void CalibrationTable::showRows(const std::vector<CalibrationRow>& rows) {
   for (const auto& r : rows) {
     const int i = rowCount();
     insertRow(i);
-    setItem(i, 0, new QTableWidgetItem(r.name));
+    auto* name = new QTableWidgetItem(r.name);
+    name->setToolTip(r.name);
+    setItem(i, 0, name);
     setItem(i, 1, new QTableWidgetItem(r.value));
     setItem(i, 2, new QTableWidgetItem(r.profile));
     setItem(i, 3, new QTableWidgetItem(source(r.identified)));
   }
-  resizeColumnsToContents();
 }
 
 std::vector<CalibrationRow> CalibrationTable::rowsFromJson(const nlohmann::json& list) {
@@ -133,8 +147,10 @@ QStringList CalibrationTable::lines(const std::vector<CalibrationRow>& rows) {
 QStringList CalibrationTable::manoeuvreLines(const nlohmann::json& m) {
   QStringList out;
   if (!m.is_object() || !m.contains("legs") || !m["legs"].is_array() || m["legs"].empty()) return out;
+  QStringList legs;
   for (const auto& leg : m["legs"])
-    if (leg.is_string()) out << QString::fromStdString(leg.get<std::string>());
+    if (leg.is_string()) legs << QString::fromStdString(leg.get<std::string>());
+  out << legs.join("; ");
   if (m.contains("expected_sigma") && m["expected_sigma"].is_object()) {
     const auto& e = m["expected_sigma"];
     QStringList parts;

@@ -37,8 +37,8 @@ class CalibrationTable : public QTableWidget {
   static QString nameOf(const std::string& id);
   // "Heave lift of the hull: 0.93 ± 0.10 × the profile's (profile 1); from this log".
   static QStringList lines(const std::vector<CalibrationRow>& rows);
-  // The manoeuvre {legs, expected_sigma} as lines: the legs, then the σ
-  // expected after it. Empty when `m` is not one.
+  // The manoeuvre {legs, expected_sigma} as lines: the legs (one line,
+  // "; " between them), then the σ expected after it. Empty when `m` is not one.
   static QStringList manoeuvreLines(const nlohmann::json& m);
   static QString source(bool identified);
 };

@@ -14,6 +14,7 @@ bool EstimateText::identified(double value, double sigma) {
 
 QString EstimateText::valueSigma(bool known, double value, double sigma, int decimals, const QString& unit) {
   if (!known || !identified(value, sigma)) return notKnown();
+  decimals = decimalsFor(sigma, decimals);  // a small sigma is shown, never "± 0.0"
   return tr("%1 ± %2%3").arg(signedFixed(value, decimals), fixed(sigma, decimals), unit);
 }
 
@@ -23,6 +24,12 @@ QString EstimateText::of(const analysis::EstimatedValue& e, int decimals, const 
 
 QString EstimateText::of(const std::optional<double>& value, double sigma, int decimals, const QString& unit) {
   return valueSigma(value.has_value(), value.value_or(NAN), sigma, decimals, unit);
+}
+
+int EstimateText::decimalsFor(double sigma, int decimals, int max) {
+  int d = decimals;
+  while (d < max && std::isfinite(sigma) && sigma > 0.0 && std::round(sigma * std::pow(10.0, d)) == 0.0) ++d;
+  return d;
 }
 
 QString EstimateText::planUses(discrepancy::EstimateSource source) {

@@ -19,10 +19,14 @@ class EstimateText {
   static QString notKnown();
   // True when a value with this sigma was identified (finite, sigma > 0).
   static bool identified(double value, double sigma);
-  // "+1.23 ± 0.05 kg" (unit appended as given, e.g. " kg" or "°"), else "not known".
+  // "+1.23 ± 0.05 kg" (unit appended as given, e.g. " kg" or "°"), else "not
+  // known"; more decimals when the sigma would round to 0 ("+0.012 ± 0.004").
   static QString valueSigma(bool known, double value, double sigma, int decimals, const QString& unit);
   static QString of(const analysis::EstimatedValue& e, int decimals, const QString& unit);
   static QString of(const std::optional<double>& value, double sigma, int decimals, const QString& unit);
+  // Decimals that show a measured sigma (a 95 % half-width) as non-zero:
+  // `decimals`, more (up to `max`) when it would round to 0.
+  static int decimalsFor(double sigma, int decimals, int max = 4);
   // The sentence every page shows: which estimate the plan uses.
   static QString planUses(discrepancy::EstimateSource source);
   // Pitch / roll of a plan are known when the estimate identified CG x / CG y.
