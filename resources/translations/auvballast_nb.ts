@@ -3070,6 +3070,11 @@
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Unit: %1</source>
+        <translation>Enhet: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
         <source>%1 = profile</source>
         <translation>%1 = profil</translation>
     </message>

@@ -170,9 +170,13 @@ TEST_F(PostMission, HuginSurveyAnalysisShadingCrosshairAndExport) {
   const QString errors = find<QLabel>(*wiz, "errors")->text();
   EXPECT_NEAR(numberAfter(errors, "roll"), r.roll_deg.mean, 0.005 + 1e-9) << errors.toStdString();
   const QString water = find<QLabel>(*wiz, "water")->text();
-  EXPECT_NE(water.indexOf(QString::number(r.density_kgm3.mean, 'f', 2) + " ± " + QString::number(r.density_kgm3.ci95, 'f', 2)),
+  // Two decimals, more when the 95 % interval would read "± 0.00" (it is 0.0002 kg/m³ here).
+  int dd = 2;
+  while (dd < 4 && std::round(r.density_kgm3.ci95 * std::pow(10.0, dd)) == 0.0) ++dd;
+  EXPECT_NE(water.indexOf(QString::number(r.density_kgm3.mean, 'f', dd) + " ± " + QString::number(r.density_kgm3.ci95, 'f', dd)),
             -1)
       << water.toStdString();
+  EXPECT_EQ(water.indexOf("± 0.00 "), -1) << water.toStdString();
   // And it finds what the simulator was told (truth in the log header): +3 kg light.
   const double truth = std::stod(*log.metadataValue("truth_net_buoyancy_kg"));
   EXPECT_NEAR(numberAfter(net, "Net buoyancy:"), truth, 3 * r.net_buoyancy_kg.sigma + 0.01);

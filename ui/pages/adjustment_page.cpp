@@ -139,7 +139,6 @@ AdjustmentPage::AdjustmentPage(WizardState& state) : state_(state) {
 
   auto* left = new QVBoxLayout;
   left->addWidget(prediction_);
-  left->addWidget(calibration_);
   left->addWidget(manoeuvre_);
   left->addWidget(scroll, 1);
   auto* right = new QVBoxLayout;
@@ -149,6 +148,7 @@ AdjustmentPage::AdjustmentPage(WizardState& state) : state_(state) {
   stepsHead->addWidget(progress_);
   right->addLayout(stepsHead);
   right->addWidget(checklist_, 1);
+  right->addWidget(calibration_);
   right->addWidget(instBox);
   auto* lower = new QHBoxLayout;
   lower->addLayout(left, 5);

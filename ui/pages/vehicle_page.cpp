@@ -56,6 +56,7 @@ VehiclePage::VehiclePage(WizardState& state) : state_(state) {
   bg_->setRange(0.0, 499.0);
   bg_->setDecimals(1);
   bg_->setSpecialValueText(tr("not measured"));
+  bg_->setMinimumHeight(32);
   bg_->setToolTip(tr("How far the centre of gravity is below the centre of buoyancy, from an inclining or roll "
                      "test. With it the analysis finds the sideways CG offset and the roll from the log; without "
                      "it they stay not known. Leave empty when not measured."));

@@ -35,7 +35,14 @@ Shown shownUnit(const std::string& id, const std::string& unit) {
 
 CalibrationRow makeRow(const std::string& id, const std::string& unit, double value, double sigma, double profile,
                    bool identified) {
-  const Shown s = shownUnit(id, unit);
+  Shown s = shownUnit(id, unit);
+  // A unit that is a sentence ("N m at 100 rpm, bollard (J = 0)") would take
+  // the table's width: it goes to the row's tooltip.
+  QString unit_note;
+  if (s.unit.size() > 12) {
+    unit_note = CalibrationTable::tr("Unit: %1").arg(s.unit.trimmed());
+    s.unit.clear();
+  }
   CalibrationRow r;
   r.name = CalibrationTable::nameOf(id);
   r.value = std::isfinite(value) && std::isfinite(sigma) && sigma > 0.0
@@ -46,6 +53,7 @@ CalibrationRow makeRow(const std::string& id, const std::string& unit, double va
               : s.relative             ? CalibrationTable::tr("%1 = profile").arg(sig(profile, 3))
                                        : sig(profile * s.scale, 3);
   r.identified = identified;
+  r.unit_note = unit_note;
   return r;
 }
 
@@ -85,9 +93,11 @@ void CalibrationTable::showRows(const std::vector<CalibrationRow>& rows) {
     const int i = rowCount();
     insertRow(i);
     auto* name = new QTableWidgetItem(r.name);
-    name->setToolTip(r.name);
+    name->setToolTip(r.unit_note.isEmpty() ? r.name : r.name + "\n" + r.unit_note);
     setItem(i, 0, name);
-    setItem(i, 1, new QTableWidgetItem(r.value));
+    auto* value = new QTableWidgetItem(r.value);
+    value->setToolTip(r.unit_note);
+    setItem(i, 1, value);
     setItem(i, 2, new QTableWidgetItem(r.profile));
     setItem(i, 3, new QTableWidgetItem(source(r.identified)));
   }
@@ -140,7 +150,8 @@ QString CalibrationTable::source(bool identified) {
 QStringList CalibrationTable::lines(const std::vector<CalibrationRow>& rows) {
   QStringList out;
   for (const auto& r : rows)
-    out << tr("%1: %2 (profile %3); %4").arg(r.name, r.value, r.profile, source(r.identified));
+    out << tr("%1: %2 (profile %3); %4").arg(r.name, r.value, r.profile, source(r.identified)) +
+               (r.unit_note.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(r.unit_note));
   return out;
 }
 

@@ -19,6 +19,7 @@ namespace auv::ui {
 
 struct CalibrationRow {
   QString name, value, profile;
+  QString unit_note;  // a long unit, said in the tooltip (and the work order) instead of the cell
   bool identified = false;
 };
 
