@@ -108,6 +108,12 @@ CREATE TABLE model_terms (
 CREATE INDEX model_terms_by_time ON model_terms(configuration_id, at);
 )sql";
 
+// v4: BG (CG below CB) of each configuration from an inclining or roll test;
+// NULL = not measured. Existing rows keep every value and get NULL.
+const char* kSchemaV4 = R"sql(
+ALTER TABLE configurations ADD COLUMN bg_mm REAL CHECK (bg_mm IS NULL OR (bg_mm > 0 AND bg_mm < 500));
+)sql";
+
 std::vector<Migration> makeStandard() {
   return {
       {1, "vehicles, configurations, weighings, water, missions",
@@ -115,6 +121,7 @@ std::vector<Migration> makeStandard() {
       {2, "analyses, recommendations, installed states",
        [](Database& db) { db.exec(kSchemaV2, "creating schema v2"); }},
       {3, "accepted vehicle-model terms", [](Database& db) { db.exec(kSchemaV3, "creating schema v3"); }},
+      {4, "BG of each configuration", [](Database& db) { db.exec(kSchemaV4, "adding configurations.bg_mm"); }},
   };
 }
 }  // namespace

@@ -32,10 +32,12 @@ RecordId HistoryEvent::id() const {
 }
 
 nlohmann::json toJson(const Configuration& c) {
-  return {{"config_id", c.config_id},     {"vehicle", c.vehicle_key},
-          {"vehicle_name", c.vehicle_name}, {"payload_note", c.payload_note},
-          {"area", c.area},                 {"water_type", c.water_type},
-          {"created_at", toIsoUtc(c.created_at)}};
+  nlohmann::json j = {{"config_id", c.config_id},     {"vehicle", c.vehicle_key},
+                      {"vehicle_name", c.vehicle_name}, {"payload_note", c.payload_note},
+                      {"area", c.area},                 {"water_type", c.water_type},
+                      {"created_at", toIsoUtc(c.created_at)}};
+  if (c.bg_mm) j["bg_mm"] = *c.bg_mm;  // absent = not measured
+  return j;
 }
 
 nlohmann::json toJson(const Weighing& r) {

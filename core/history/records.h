@@ -30,6 +30,9 @@ struct Configuration {
   std::string area;        // area of operation, e.g. "Horten"
   std::string water_type;  // e.g. "coastal", "fjord", "open ocean"
   TimePoint created_at{};
+  // CG below CB from an inclining or roll test (what makes CG y and roll
+  // identifiable from a log); unset = not measured.
+  std::optional<double> bg_mm;
 };
 
 enum class WeighingMethod { kCrane, kTank };

@@ -33,6 +33,7 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
                        "restore the automatic backup: move '" + path() + "' aside and copy '" + db.backupPath() +
                            "' to '" + path() + "'");
     }
+    has_bg_column_ = db.queryInt("SELECT count(*) FROM pragma_table_info('configurations') WHERE name = 'bg_mm'") > 0;
     return;
   }
   // WAL: a save appends to the -wal file and the main file changes only at
@@ -49,6 +50,7 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
   db.exec("PRAGMA synchronous = FULL", "setting synchronous mode");
   db.exec("PRAGMA foreign_keys = ON", "enabling foreign keys");
   migrate(db, steps);
+  has_bg_column_ = db.queryInt("SELECT count(*) FROM pragma_table_info('configurations') WHERE name = 'bg_mm'") > 0;
 }
 
 int HistoryStore::schemaVersion() { return schemaVersionOf(*db_); }

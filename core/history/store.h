@@ -42,6 +42,9 @@ class HistoryStore {
   RecordId ensureVehicle(const std::string& key, const std::string& name);
   // Validates the ID; creates the vehicle row if needed; InputError if the ID exists.
   RecordId addConfiguration(const Configuration& c);
+  // BG (mm, CG below CB) of an existing configuration; nullopt = not measured.
+  // InputError outside 0..500 mm or for an unknown configuration.
+  void setConfigurationBg(const std::string& config_id, std::optional<double> bg_mm);
   RecordId addWeighing(const std::string& config_id, const Weighing& w);
   RecordId addWaterCondition(const std::string& config_id, const WaterCondition& w);
   // InputError if the same content (sha256) is already in this configuration.
@@ -84,7 +87,11 @@ class HistoryStore {
  private:
   void open(const std::vector<Migration>& steps);
   RecordId configRow(const std::string& config_id);
+  // The configurations' columns as this file has them: a store opened with
+  // fewer steps (an older program's schema, in tests) has no bg_mm.
+  std::string configColumns() const;
   std::unique_ptr<Database> db_;
+  bool has_bg_column_ = false;
 };
 
 }  // namespace auv

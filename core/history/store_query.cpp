@@ -19,10 +19,8 @@ nlohmann::json parseStored(const std::string& text, const std::string& what) {
   }
 }
 
-#define AUV_CONFIG_SELECT \
-  "c.id, c.config_id, v.key, v.name, c.payload_note, c.area, c.water_type, c.created_at"
-#define AUV_CONFIG_FROM " FROM configurations c JOIN vehicles v ON v.id = c.vehicle_id"
-const char* kConfigCols = AUV_CONFIG_SELECT AUV_CONFIG_FROM;
+const char* kConfigSelect = "c.id, c.config_id, v.key, v.name, c.payload_note, c.area, c.water_type, c.created_at, ";
+const char* kConfigFrom = " FROM configurations c JOIN vehicles v ON v.id = c.vehicle_id";
 Configuration readConfiguration(Statement& st) {
   Configuration c;
   c.id = st.integer(0);
@@ -33,6 +31,7 @@ Configuration readConfiguration(Statement& st) {
   c.area = st.text(5);
   c.water_type = st.text(6);
   c.created_at = parseIsoUtc(st.text(7), "configurations.created_at");
+  c.bg_mm = st.optReal(8);
   return c;
 }
 
@@ -140,8 +139,12 @@ std::string likePattern(const std::string& text) {
 }
 }  // namespace
 
+std::string HistoryStore::configColumns() const {
+  return std::string(kConfigSelect) + (has_bg_column_ ? "c.bg_mm" : "NULL") + kConfigFrom;
+}
+
 std::optional<Configuration> HistoryStore::configuration(const std::string& config_id) {
-  auto st = db_->prepare(std::string("SELECT ") + kConfigCols + " WHERE c.config_id = ?1");
+  auto st = db_->prepare(std::string("SELECT ") + configColumns() + " WHERE c.config_id = ?1");
   st.bind(1, config_id);
   if (!st.step()) return std::nullopt;
   return readConfiguration(st);
@@ -237,7 +240,9 @@ std::vector<HistoryEvent> HistoryStore::history(const std::string& config_id) {
 std::vector<ConfigurationSummary> HistoryStore::recentConfigurations(std::size_t limit) {
   // ISO-8601 text compares in time order, so MAX over the text is the latest;
   // multi-argument max() is NULL if any argument is, hence the COALESCEs.
-  auto st = db_->prepare("SELECT " AUV_CONFIG_SELECT R"sql(,
+  const std::string cols = configColumns();
+  const std::string select = cols.substr(0, cols.find(" FROM configurations"));
+  auto st = db_->prepare("SELECT " + select + R"sql(,
       max(c.created_at,
           coalesce((SELECT max(at) FROM weighings WHERE configuration_id = c.id), ''),
           coalesce((SELECT max(measured_at) FROM water_conditions WHERE configuration_id = c.id), ''),
@@ -245,14 +250,14 @@ std::vector<ConfigurationSummary> HistoryStore::recentConfigurations(std::size_t
           coalesce((SELECT max(at) FROM analysis_results WHERE configuration_id = c.id), ''),
           coalesce((SELECT max(at) FROM recommendations WHERE configuration_id = c.id), ''),
           coalesce((SELECT max(installed_at) FROM installed_states WHERE configuration_id = c.id), ''))
-      AS last_activity)sql" AUV_CONFIG_FROM R"sql(
+      AS last_activity)sql" + std::string(kConfigFrom) + R"sql(
     ORDER BY last_activity DESC, c.id DESC LIMIT ?1)sql");
   st.bind(1, std::int64_t(std::min<std::size_t>(limit, 1u << 30)));
   std::vector<ConfigurationSummary> out;
   while (st.step()) {
     ConfigurationSummary s;
     s.configuration = readConfiguration(st);
-    s.last_activity = parseIsoUtc(st.text(8), "last activity");
+    s.last_activity = parseIsoUtc(st.text(9), "last activity");
     out.push_back(std::move(s));
   }
   return out;
@@ -261,7 +266,7 @@ std::vector<ConfigurationSummary> HistoryStore::recentConfigurations(std::size_t
 std::vector<Configuration> HistoryStore::search(const std::string& text) {
   // LIKE is case-insensitive for ASCII, which covers IDs and place names typed
   // on a workshop keyboard; the wildcards in the user's text are escaped.
-  auto st = db_->prepare(std::string("SELECT ") + kConfigCols +
+  auto st = db_->prepare(std::string("SELECT ") + configColumns() +
                          " WHERE c.config_id LIKE ?1 ESCAPE '\\' OR c.payload_note LIKE ?1 "
                          "ESCAPE '\\' OR c.area LIKE ?1 ESCAPE '\\' OR c.water_type LIKE ?1 "
                          "ESCAPE '\\' OR v.key LIKE ?1 ESCAPE '\\' OR v.name LIKE ?1 ESCAPE '\\' "

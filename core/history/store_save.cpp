@@ -26,6 +26,14 @@ void validate(const WaterCondition& w) {
   requireRange(w.density_kg_m3, 950.0, 1100.0, "water.density_kg_m3", "kg/m^3");
 }
 
+// BG is what turns a steady roll into CG y: a wrong one is a wrong CG y.
+std::optional<double> checkedBg(const std::optional<double>& bg_mm) {
+  if (bg_mm && !(std::isfinite(*bg_mm) && *bg_mm > 0.0 && *bg_mm < 500.0))
+    throw InputError("BG (CG below CB)", "value " + std::to_string(*bg_mm) + " mm is outside 0..500 mm",
+                     "enter the BG of an inclining or roll test in mm, or leave it empty when not measured");
+  return bg_mm;
+}
+
 void validate(const InstalledState& s) {
   for (const InstalledPoint& p : s.points) {
     const std::string field = "installed." + (p.name.empty() ? std::string("?") : p.name);
@@ -75,14 +83,25 @@ RecordId HistoryStore::addConfiguration(const Configuration& c) {
     throw InputError("configuration ID", "'" + c.config_id + "' already exists in '" + path() + "'",
                      "continue with the existing configuration or choose a new ID");
   const RecordId vehicle = ensureVehicle(c.vehicle_key, c.vehicle_name);
-  auto st = db_->prepare(
-      "INSERT INTO configurations(config_id, vehicle_id, payload_note, area, water_type, "
-      "created_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  const std::optional<double> bg = checkedBg(c.bg_mm);
+  auto st = db_->prepare(has_bg_column_ ? "INSERT INTO configurations(config_id, vehicle_id, payload_note, area, "
+                                          "water_type, created_at, bg_mm) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)"
+                                        : "INSERT INTO configurations(config_id, vehicle_id, payload_note, area, "
+                                          "water_type, created_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
   st.bind(1, c.config_id).bind(2, vehicle).bind(3, c.payload_note).bind(4, c.area);
-  st.bind(5, c.water_type).bind(6, toIsoUtc(c.created_at)).run();
+  st.bind(5, c.water_type).bind(6, toIsoUtc(c.created_at));
+  if (has_bg_column_) st.bind(7, bg);
+  st.run();
   const RecordId id = db_->lastInsertId();
   tx.commit();
   return id;
+}
+
+void HistoryStore::setConfigurationBg(const std::string& config_id, std::optional<double> bg_mm) {
+  Transaction tx(*db_);
+  auto st = db_->prepare("UPDATE configurations SET bg_mm = ?1 WHERE id = ?2");
+  st.bind(1, checkedBg(bg_mm)).bind(2, configRow(config_id)).run();
+  tx.commit();
 }
 
 RecordId HistoryStore::addWeighing(const std::string& config_id, const Weighing& w) {

@@ -3038,4 +3038,318 @@
         <translation>Ikke lagret: %1</translation>
     </message>
 </context>
+<context>
+    <name>auv::ui::EstimateText</name>
+    <message>
+        <location filename="../../ui/widgets/estimate_text.cpp" />
+        <source>not known</source>
+        <translation>ikke kjent</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/estimate_text.cpp" />
+        <source>%1 ± %2%3</source>
+        <translation>%1 ± %2%3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/estimate_text.cpp" />
+        <source>The plan uses the estimate with the model-check terms you accepted.</source>
+        <translation>Planen bruker estimatet med modellsjekk-leddene du godtok.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/estimate_text.cpp" />
+        <source>The plan uses the estimate calibrated from this log.</source>
+        <translation>Planen bruker estimatet kalibrert fra denne loggen.</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::CalibrationTable</name>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Unit: %1</source>
+        <translation>Enhet: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>%1 = profile</source>
+        <translation>%1 = profil</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>%1 ± %2%3</source>
+        <translation>%1 ± %2%3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>not known</source>
+        <translation>ikke kjent</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>not given</source>
+        <translation>ikke oppgitt</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Calibrated constant</source>
+        <translation>Kalibrert konstant</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Value ± σ</source>
+        <translation>Verdi ± σ</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>From</source>
+        <translation>Fra</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>The vehicle constants fitted together with the ballast state. &quot;This log&quot;: the log narrowed it; &quot;stayed at the prior&quot;: the log could not tell, the profile&apos;s value and its uncertainty stand.</source>
+        <translation>Fartøykonstantene tilpasset sammen med ballasttilstanden. «Denne loggen»: loggen snevret den inn; «ble ved forhåndsverdien»: loggen kunne ikke avgjøre det, og profilens verdi og usikkerhet står.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Nothing was calibrated: the profile&apos;s constants are used as they are.</source>
+        <translation>Ingenting ble kalibrert: profilens konstanter brukes som de er.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Heave lift of the hull</source>
+        <translation>Skrogets løft i hiv</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Heave force derivatives</source>
+        <translation>Deriverte av hivkraften</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Pitch moment from heave (with the Munk moment)</source>
+        <translation>Stampemoment fra hiv (med Munk-momentet)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Cross-flow lift and moment</source>
+        <translation>Tverrstrømsløft og -moment</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Cross-flow pitch moment</source>
+        <translation>Tverrstrømmens stampemoment</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Stern-plane effectiveness</source>
+        <translation>Virkningen av akterrorene</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Elevator zero offset</source>
+        <translation>Nullpunktsavvik for dybderoret</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>BG (CG below CB)</source>
+        <translation>BG (CG under CB)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Propeller torque</source>
+        <translation>Propellmoment</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Pitch damping</source>
+        <translation>Stampedemping</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Roll damping</source>
+        <translation>Rulledemping</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Surge drag</source>
+        <translation>Motstand i lengderetningen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>this log</source>
+        <translation>denne loggen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>stayed at the prior</source>
+        <translation>ble ved forhåndsverdien</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>%1: %2 (profile %3); %4</source>
+        <translation>%1: %2 (profil %3); %4</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>net buoyancy ± %1 kg</source>
+        <translation>netto oppdrift ± %1 kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>CG x ± %1 mm</source>
+        <translation>CG x ± %1 mm</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" />
+        <source>Expected afterwards (1 σ): %1</source>
+        <translation>Forventet etterpå (1 σ): %1</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::VehiclePage</name>
+    <message>
+        <location filename="../../ui/pages/vehicle_page.cpp" />
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/vehicle_page.cpp" />
+        <source>not measured</source>
+        <translation>ikke målt</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/vehicle_page.cpp" />
+        <source>How far the centre of gravity is below the centre of buoyancy, from an inclining or roll test. With it the analysis finds the sideways CG offset and the roll from the log; without it they stay not known. Leave empty when not measured.</source>
+        <translation>Hvor langt tyngdepunktet ligger under oppdriftssenteret, fra en krengeprøve eller rulleprøve. Med den finner analysen tyngdepunktets sideforskyvning og rullingen fra loggen; uten den forblir de ikke kjent. La feltet stå tomt når den ikke er målt.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/vehicle_page.cpp" />
+        <source>B&amp;G (CG below CB):</source>
+        <translation>B&amp;G (CG under CB):</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::DeviationPlotsPage</name>
+    <message>
+        <location filename="../../ui/widgets/analysis_summary.cpp" />
+        <source>CG − CB: &lt;b&gt;%1&lt;/b&gt; (see the notes)</source>
+        <translation>CG − CB: &lt;b&gt;%1&lt;/b&gt; (se merknadene)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/analysis_summary.cpp" />
+        <source>This log&apos;s analysis alone: net buoyancy %1.</source>
+        <translation>Analysen av denne loggen alene: netto oppdrift %1.</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::ModelCheckPage</name>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>%1 samples in %2 dives/legs.</source>
+        <translation>%1 målinger i %2 dykk/etapper.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Ballast state: net buoyancy &lt;b&gt;%1&lt;/b&gt;, CG − CB x &lt;b&gt;%2&lt;/b&gt;, y &lt;b&gt;%3&lt;/b&gt; (model ballast state alone: %4 kg).</source>
+        <translation>Ballasttilstand: netto oppdrift &lt;b&gt;%1&lt;/b&gt;, CG − CB x &lt;b&gt;%2&lt;/b&gt;, y &lt;b&gt;%3&lt;/b&gt; (modellen med bare ballasttilstand: %4 kg).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source>Net buoyancy with the accepted terms &lt;b&gt;%1&lt;/b&gt; (ballast state alone: %2 kg).</source>
+        <translation>Netto oppdrift med de godtatte leddene &lt;b&gt;%1&lt;/b&gt; (bare ballasttilstand: %2 kg).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source> kg</source>
+        <translation> kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/model_check_page.cpp" />
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::AdjustmentPage</name>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" />
+        <source>&lt;b&gt;Calibration manoeuvre&lt;/b&gt; to add to the next mission: %1</source>
+        <translation>&lt;b&gt;Kalibreringsmanøver&lt;/b&gt; å legge til neste oppdrag: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" />
+        <source>Differs from the plan at %1. As installed: net buoyancy %2 %3, pitch %4 %5, roll %6 %7%8</source>
+        <translation>Avviker fra planen i %1. Slik det er montert: netto oppdrift %2 %3, stamp %4 %5, rull %6 %7%8</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" />
+        <source> kg</source>
+        <translation> kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/adjustment_page.cpp" />
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::PreMissionPage</name>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" />
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" />
+        <source> kg</source>
+        <translation> kg</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" />
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" />
+        <source>Net buoyancy &lt;b&gt;%1&lt;/b&gt; (%2) in %3 kg/m³ water at %4 m (%5 °C, %6 PSU).</source>
+        <translation>Netto oppdrift &lt;b&gt;%1&lt;/b&gt; (%2) i %3 kg/m³ vann på %4 m (%5 °C, %6 PSU).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/pre_mission_page.cpp" />
+        <source>Plan: %1 piece(s) to handle; afterwards net buoyancy %2, pitch %3, roll %4 at %5 m.</source>
+        <translation>Plan: %1 vektbit(er) å håndtere; etterpå netto oppdrift %2, stamp %3, rull %4 på %5 m.</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::WorkOrder</name>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" />
+        <source>Pitch at rest %1 (band ±%2°)%3</source>
+        <translation>Stamp i ro %1 (bånd ±%2°)%3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" />
+        <source>Roll %1 (band ±%2°)%3</source>
+        <translation>Rull %1 (bånd ±%2°)%3</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" />
+        <source>What was calibrated</source>
+        <translation>Hva som ble kalibrert</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/work_order.cpp" />
+        <source>Calibration manoeuvre for the next mission</source>
+        <translation>Kalibreringsmanøver for neste oppdrag</translation>
+    </message>
+</context>
 </TS>

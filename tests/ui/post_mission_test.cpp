@@ -170,9 +170,13 @@ TEST_F(PostMission, HuginSurveyAnalysisShadingCrosshairAndExport) {
   const QString errors = find<QLabel>(*wiz, "errors")->text();
   EXPECT_NEAR(numberAfter(errors, "roll"), r.roll_deg.mean, 0.005 + 1e-9) << errors.toStdString();
   const QString water = find<QLabel>(*wiz, "water")->text();
-  EXPECT_NE(water.indexOf(QString::number(r.density_kgm3.mean, 'f', 2) + " ± " + QString::number(r.density_kgm3.ci95, 'f', 2)),
+  // Two decimals, more when the 95 % interval would read "± 0.00" (it is 0.0002 kg/m³ here).
+  int dd = 2;
+  while (dd < 4 && std::round(r.density_kgm3.ci95 * std::pow(10.0, dd)) == 0.0) ++dd;
+  EXPECT_NE(water.indexOf(QString::number(r.density_kgm3.mean, 'f', dd) + " ± " + QString::number(r.density_kgm3.ci95, 'f', dd)),
             -1)
       << water.toStdString();
+  EXPECT_EQ(water.indexOf("± 0.00 "), -1) << water.toStdString();
   // And it finds what the simulator was told (truth in the log header): +3 kg light.
   const double truth = std::stod(*log.metadataValue("truth_net_buoyancy_kg"));
   EXPECT_NEAR(numberAfter(net, "Net buoyancy:"), truth, 3 * r.net_buoyancy_kg.sigma + 0.01);
@@ -413,10 +417,24 @@ TEST_F(PostMission, DelphinModelCheckCalibratesThePropellerTorque) {
   ASSERT_NE(torque, mc.calibration.end());
   EXPECT_TRUE(torque->identified);
   EXPECT_NEAR(torque->value / torque->profile_value, 0.0115 / 0.0075, 0.1);
-  // The AUV model also reports the CG offset (truth in the log: x 2, y 0.5 mm).
+  // The AUV model also fits the CG offset (truth in the log: x 2, y 0.5 mm)...
+  EXPECT_NEAR(mc.cg_x_mm, 2.0, 0.1);
+  EXPECT_NEAR(mc.cg_y_mm, 0.5, 0.1);
+  // ...but the page shows the ballast state the plan uses: with no term to
+  // accept, the analysis's; CG y needs a BG from a roll test: not known.
   const QString summary = find<QLabel>(*wiz, "check_summary")->text();
-  EXPECT_NEAR(numberAfter(summary, "CG − CB x"), 2.0, 0.1) << summary.toStdString();
-  EXPECT_NEAR(numberAfter(summary, "y"), 0.5, 0.1) << summary.toStdString();
+  ASSERT_TRUE(wiz->state().analysis.has_value());
+  if (wiz->state().accepted_terms.empty()) {
+    EXPECT_NE(summary.indexOf("The plan uses the estimate calibrated from this log."), -1) << summary.toStdString();
+    EXPECT_NEAR(numberAfter(summary, "CG − CB x <b>"), wiz->state().analysis->cg_x_mm.value, 0.005 + 1e-9) << summary.toStdString();
+  }
+  EXPECT_NE(summary.indexOf("y <b>not known</b>"), -1) << summary.toStdString();
+  // What was calibrated, by name: the torque identified from this log.
+  auto* cal = find<QTableWidget>(*wiz, "check_calibration");
+  bool shown = false;
+  for (int row = 0; row < cal->rowCount(); ++row)
+    shown = shown || (cal->item(row, 0)->text() == "Propeller torque" && cal->item(row, 3)->text() == "this log");
+  EXPECT_TRUE(shown);
   shot(*wiz, "22c_model_check_delphin2");
 }
 

@@ -20,6 +20,8 @@
 #include "common/input_error.h"
 #include "firstmission/hugin_first_mission.h"
 #include "planning/installed_prediction.h"
+#include "widgets/calibration_table.h"
+#include "widgets/estimate_text.h"
 #include "widgets/inputs.h"
 #include "widgets/weight_map_widget.h"
 #include "wizard/operator_wizard.h"
@@ -75,6 +77,14 @@ AdjustmentPage::AdjustmentPage(WizardState& state) : state_(state) {
   prediction_->setFixedHeight(prediction_->horizontalHeader()->sizeHint().height() + 4 * 24 + 2 * prediction_->frameWidth());
 
   QScrollArea* scroll = makeMessageArea("messages", &messages_);
+  // What the analysis calibrated and, when asked for, the manoeuvre that
+  // would identify the rest (issue 11).
+  calibration_ = new CalibrationTable;
+  calibration_->setMaximumHeight(130);
+  manoeuvre_ = new QLabel;
+  manoeuvre_->setObjectName("calibration_manoeuvre");
+  manoeuvre_->setWordWrap(true);
+  manoeuvre_->setTextFormat(Qt::RichText);
 
   auto* stepsLabel = new QLabel(tr("&Steps (tick each when done):"));
   checklist_ = new QListWidget;
@@ -129,6 +139,7 @@ AdjustmentPage::AdjustmentPage(WizardState& state) : state_(state) {
 
   auto* left = new QVBoxLayout;
   left->addWidget(prediction_);
+  left->addWidget(manoeuvre_);
   left->addWidget(scroll, 1);
   auto* right = new QVBoxLayout;
   auto* stepsHead = new QHBoxLayout;
@@ -137,6 +148,7 @@ AdjustmentPage::AdjustmentPage(WizardState& state) : state_(state) {
   stepsHead->addWidget(progress_);
   right->addLayout(stepsHead);
   right->addWidget(checklist_, 1);
+  right->addWidget(calibration_);
   right->addWidget(instBox);
   auto* lower = new QHBoxLayout;
   lower->addLayout(left, 5);
@@ -236,7 +248,26 @@ void AdjustmentPage::initializePage() {
   checklist_->blockSignals(false);
   updateProgress();
   showPlan();
+  showCalibration();
   showActualPrediction();
+}
+
+void AdjustmentPage::showCalibration() {
+  // The report the plan started from (this session's estimate or the history's).
+  nlohmann::json report;
+  try {
+    auto* w = qobject_cast<OperatorWizard*>(wizard());
+    report = planBasis(state_, w ? w->history() : nullptr, w ? w->now() : nowUtc(), state_.policy).report;
+  } catch (const InputError&) {
+    // No analysis to plan from: nothing was calibrated.
+  }
+  calibration_->showRows(CalibrationTable::rowsFromJson(report.value("calibration", nlohmann::json::array())));
+  const QStringList legs =
+      state_.plan->calibration_manoeuvre ? CalibrationTable::manoeuvreLines(*state_.plan->calibration_manoeuvre) : QStringList();
+  manoeuvre_->setVisible(!legs.isEmpty());
+  if (!legs.isEmpty())
+    manoeuvre_->setText(tr("<b>Calibration manoeuvre</b> to add to the next mission: %1")
+                            .arg(legs.join(". ").toHtmlEscaped()));
 }
 
 void AdjustmentPage::updateProgress() {
@@ -257,19 +288,20 @@ void AdjustmentPage::showPlan() {
   const int nd = g ? 3 : 2;
   struct Row {
     QString name, now, after, band;
-    bool ok;
+    std::optional<bool> ok;  // unset: not known
   };
+  const bool pitch_known = EstimateText::pitchKnown(p), roll_known = EstimateText::rollKnown(p);
   std::vector<Row> rows = {
       {tr("Net buoyancy"), tr("%1 kg").arg(signedFixed(p.net_before_kg, nd)),
        tr("%1 ± %2 kg").arg(signedFixed(p.predicted.net_buoyancy_kg, nd), fixed(p.net_sigma_kg, nd)),
        tr("%1 .. %2 kg").arg(fixed(std::max(0.0, spec.net_buoyancy_min_kg), 1), fixed(spec.net_buoyancy_max_kg, 1)),
        p.buoyancy_in_band},
-      {tr("Pitch at rest"), tr("%1°").arg(signedFixed(p.pitch_before_deg, 2)),
-       tr("%1° ± %2°").arg(signedFixed(p.predicted.pitch_deg, 2), fixed(p.pitch_sigma_deg, 2)),
-       tr("±%1°").arg(fixed(spec.pitch_tolerance_deg, 1)), p.pitch_in_band},
-      {tr("Roll"), tr("%1°").arg(signedFixed(p.roll_before_deg, 2)),
-       tr("%1° ± %2°").arg(signedFixed(p.predicted.roll_deg, 2), fixed(p.roll_sigma_deg, 2)),
-       tr("±%1°").arg(fixed(spec.roll_tolerance_deg, 1)), p.roll_in_band}};
+      {tr("Pitch at rest"), pitch_known ? tr("%1°").arg(signedFixed(p.pitch_before_deg, 2)) : EstimateText::notKnown(),
+       EstimateText::valueSigma(pitch_known, p.predicted.pitch_deg, p.pitch_sigma_deg, 2, tr("°")),
+       tr("±%1°").arg(fixed(spec.pitch_tolerance_deg, 1)), pitch_known ? std::optional<bool>(p.pitch_in_band) : std::nullopt},
+      {tr("Roll"), roll_known ? tr("%1°").arg(signedFixed(p.roll_before_deg, 2)) : EstimateText::notKnown(),
+       EstimateText::valueSigma(roll_known, p.predicted.roll_deg, p.roll_sigma_deg, 2, tr("°")),
+       tr("±%1°").arg(fixed(spec.roll_tolerance_deg, 1)), roll_known ? std::optional<bool>(p.roll_in_band) : std::nullopt}};
   // The spec's pitch band is about the pitch flown level (thesis §5.3.2);
   // shown when the profile's hydrodynamics and the cruise speed allow it.
   if (p.flight_pitch_after_deg && p.flight_pitch_before_deg) {
@@ -282,10 +314,10 @@ void AdjustmentPage::showPlan() {
   prediction_->setRowCount(static_cast<int>(rows.size()));
   for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
     const Row& row = rows[static_cast<std::size_t>(r)];
-    const QString cells[5] = {row.name, row.now, row.after, row.band, mark(row.ok)};
+    const QString cells[5] = {row.name, row.now, row.after, row.band, row.ok ? mark(*row.ok) : QStringLiteral("?")};
     for (int c = 0; c < 5; ++c) {
       auto* item = new QTableWidgetItem(cells[c]);
-      if (c >= 2) item->setBackground(passColour(row.ok));
+      if (c >= 2 && row.ok) item->setBackground(passColour(*row.ok));
       if (c == 4) item->setTextAlignment(Qt::AlignCenter);
       prediction_->setItem(r, c, item);
     }
@@ -325,14 +357,17 @@ void AdjustmentPage::showActualPrediction() {
     const InstalledPrediction r = predictInstalled(*state_.vehicle, p, before_, state_.actually_installed_kg);
     const bool g = state_.isGlider();
     const int nd = g ? 3 : 2;
-    const bool all = r.buoyancy_in_band && r.pitch_in_band && r.roll_in_band && r.safe;
+    const bool pitch_known = EstimateText::pitchKnown(p), roll_known = EstimateText::rollKnown(p);
+    const bool all = r.buoyancy_in_band && (r.pitch_in_band || !pitch_known) && (r.roll_in_band || !roll_known) && r.safe;
     actual_prediction_->setStyleSheet(all ? "color: #1b5e20;" : "color: #b00020;");
     actual_prediction_->setText(
-        tr("Differs from the plan at %1. As installed: net buoyancy %2 ± %3 kg %4, pitch %5° ± %6° %7, roll %8° ± %9° %10%11")
+        tr("Differs from the plan at %1. As installed: net buoyancy %2 %3, pitch %4 %5, roll %6 %7%8")
             .arg(differ.join(", "))
-            .arg(signedFixed(r.net_buoyancy_kg, nd), fixed(r.net_sigma_kg, nd), mark(r.buoyancy_in_band))
-            .arg(signedFixed(r.pitch_deg, 2), fixed(r.pitch_sigma_deg, 2), mark(r.pitch_in_band))
-            .arg(signedFixed(r.roll_deg, 2), fixed(r.roll_sigma_deg, 2), mark(r.roll_in_band))
+            .arg(EstimateText::valueSigma(true, r.net_buoyancy_kg, r.net_sigma_kg, nd, tr(" kg")), mark(r.buoyancy_in_band))
+            .arg(EstimateText::valueSigma(pitch_known, r.pitch_deg, r.pitch_sigma_deg, 2, tr("°")),
+                 pitch_known ? mark(r.pitch_in_band) : QString())
+            .arg(EstimateText::valueSigma(roll_known, r.roll_deg, r.roll_sigma_deg, 2, tr("°")),
+                 roll_known ? mark(r.roll_in_band) : QString())
             .arg(r.safe ? tr(".") : tr("; NOT safe at every planned depth.")) +
         (r.flight_pitch_deg ? tr(" Pitch in flight %1° %2.").arg(signedFixed(*r.flight_pitch_deg, 2),
                                                                    mark(r.flight_pitch_in_band.value_or(false)))

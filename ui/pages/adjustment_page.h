@@ -14,6 +14,7 @@ class QAction;
 namespace auv::ui {
 
 class NumberInput;
+class CalibrationTable;
 
 class WeightMapWidget;
 
@@ -45,6 +46,7 @@ class AdjustmentPage : public QWizardPage {
   void applyInstalled(std::size_t point, double kg);  // no undo entry
   void showPlan();
   void showActualPrediction();
+  void showCalibration();  // what was calibrated and the manoeuvre, if asked for
   void updateProgress();
   std::vector<double> planned() const;
 
@@ -54,6 +56,8 @@ class AdjustmentPage : public QWizardPage {
   WeightMapWidget* map_;
   QTableWidget* prediction_;
   QLabel* messages_;
+  CalibrationTable* calibration_;
+  QLabel* manoeuvre_;
   QListWidget* checklist_;
   QLabel* progress_;
   QGridLayout* installed_grid_;

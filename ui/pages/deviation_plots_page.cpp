@@ -23,10 +23,12 @@
 #include "plot/min_max_decimation.h"
 #include "plot/nice_axis.h"
 #include "plot/plotted_window_csv.h"
+#include "widgets/estimate_text.h"
 #include "widgets/export_file_dialog.h"
 #include "widgets/inputs.h"
 #include "widgets/linked_chart_view.h"
 #include "wizard/operator_wizard.h"
+#include "wizard/pre_mission_inputs.h"
 
 namespace auv::ui {
 namespace {
@@ -178,6 +180,14 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
   });
 }
 
+void DeviationPlotsPage::showEvent(QShowEvent* e) {
+  // Back from the model-check page: the estimate the plan uses may have
+  // changed with the terms accepted there (QWizard does not initialise a
+  // page again on Back).
+  if (state_.log) showAnalysis();
+  QWizardPage::showEvent(e);
+}
+
 int DeviationPlotsPage::nextId() const { return OperatorWizard::kModelCheck; }
 
 void DeviationPlotsPage::buildPlot(PlotData& p, const char* measured, const char* commanded) {
@@ -247,6 +257,8 @@ void DeviationPlotsPage::runAnalysis() {
     // The import page entered one value per point (AUVs); a glider's fit has no use for it.
     if (!state_.isGlider() && state_.mission_installed_kg.size() == state_.vehicle->points.size())
       o.installed_kg = state_.mission_installed_kg;
+    // BG from the configuration (roll test): CG y and roll become identifiable.
+    if (state_.bg_mm && !state_.isGlider()) o.bg_m = *state_.bg_mm / 1000.0;
     state_.analysis = analysis::analyzeMission(*state_.log, *state_.vehicle, o);
   } catch (const std::exception& e) {
     analysis_error_ = q(e.what());
@@ -254,7 +266,17 @@ void DeviationPlotsPage::runAnalysis() {
 }
 
 void DeviationPlotsPage::showAnalysis() {
-  summary_.show(state_.analysis ? &*state_.analysis : nullptr, state_.isGlider(), analysis_error_);
+  // The estimate the plan uses: with accepted model-check terms (after Back
+  // from the model-check page) it is the check's ballast state.
+  const auto e = sessionEstimate(state_);
+  QString source;
+  if (e) {
+    source = EstimateText::planUses(e->source);
+    if (e->source == discrepancy::EstimateSource::kModelCheck)
+      source += " " + tr("This log's analysis alone: net buoyancy %1.")
+                          .arg(EstimateText::of(state_.analysis->net_buoyancy_kg, state_.isGlider() ? 3 : 2, tr(" kg")));
+  }
+  summary_.show(e ? &e->report : nullptr, state_.isGlider(), analysis_error_, source);
 }
 
 void DeviationPlotsPage::showSegments() {

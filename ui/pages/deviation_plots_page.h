@@ -36,6 +36,11 @@ class DeviationPlotsPage : public QWizardPage {
   enum Plot { kDepth = 0, kPitch, kRoll };
   explicit DeviationPlotsPage(WizardState& state);
   void initializePage() override;
+
+ protected:
+  void showEvent(QShowEvent* e) override;
+
+ public:
   int nextId() const override;
 
   // Visible time range in minutes since the log start, applied to all charts.

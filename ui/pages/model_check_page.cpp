@@ -24,11 +24,14 @@
 #include "history/store.h"
 #include "plot/min_max_decimation.h"
 #include "plot/nice_axis.h"
+#include "widgets/calibration_table.h"
+#include "widgets/estimate_text.h"
 #include "widgets/inputs.h"
 #include "wizard/history_save.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/vehicle_catalog.h"
 #include "wizard/operator_wizard.h"
+#include "wizard/pre_mission_inputs.h"
 
 namespace auv::ui {
 namespace {
@@ -118,6 +121,8 @@ ModelCheckPage::ModelCheckPage(WizardState& state) : state_(state) {
   terms_->setToolTip(tr("Physics the model lacks, best first. Tick a term to accept it (Space toggles the "
                         "selected row); accepted terms go into the vehicle model for the next mission."));
   QScrollArea* scroll = makeMessageArea("where", &where_, Qt::RichText);
+  calibration_ = new CalibrationTable;
+  calibration_->setObjectName("check_calibration");
   save_status_ = makeErrorLabel("save_status");
 
   auto* top = new QHBoxLayout;
@@ -130,14 +135,18 @@ ModelCheckPage::ModelCheckPage(WizardState& state) : state_(state) {
   crow->addWidget(difference_);
   crow->addStretch(1);
   auto* bottom = new QHBoxLayout;
-  bottom->addWidget(terms_, 3);
+  // Left: the terms to accept over what was calibrated; right: where.
+  auto* left = new QVBoxLayout;
+  left->addWidget(terms_, 2);
+  left->addWidget(calibration_, 3);
+  bottom->addLayout(left, 3);
   bottom->addWidget(scroll, 2);
   auto* lay = new QVBoxLayout(this);
   lay->setSpacing(4);
   lay->addLayout(top);
   lay->addWidget(summary_);
   lay->addLayout(crow);
-  lay->addWidget(chart_view_, 3);
+  lay->addWidget(chart_view_, 2);
   lay->addLayout(bottom, 2);
   lay->addWidget(save_status_);
   setTabOrder(channel_, difference_);
@@ -237,15 +246,8 @@ void ModelCheckPage::showResult() {
   status_->setStyleSheet(QString());
   const auto& r = *outcome_.result;
   status_->setText(tr("Model: %1.").arg(q(outcome_.description)));
-  QString s = tr("%1 samples in %2 dives/legs. Net buoyancy with the accepted terms <b>%3 ± %4 kg</b> "
-                 "(ballast state alone: %5 kg)")
-                  .arg(r.samples)
-                  .arg(r.units)
-                  .arg(fixed(r.net_buoyancy_kg, 3), fixed(r.net_buoyancy_sigma_kg, 3), fixed(r.net_buoyancy_base_kg, 3));
-  if (r.has_cg)
-    s += tr("; CG − CB x %1 ± %2 mm, y %3 ± %4 mm")
-             .arg(fixed(r.cg_x_mm, 2), fixed(r.cg_x_sigma_mm, 2), fixed(r.cg_y_mm, 2), fixed(r.cg_y_sigma_mm, 2));
-  summary_->setText(s + ".");
+  showSummary();
+  calibration_->showRows(CalibrationTable::rowsOf(r.calibration));
   const auto& ov = outcome_.overlay;
   filling_ = true;
   for (std::size_t i = 0; i < ov.channels.size(); ++i) {
@@ -262,6 +264,29 @@ void ModelCheckPage::showResult() {
   }
   showTerms();
   showWhere();
+}
+
+void ModelCheckPage::showSummary() {
+  const auto& r = *outcome_.result;
+  // The ballast state the plan uses (the same as on the analysis page and
+  // the plan), with the check's own ballast-only fit for comparison.
+  const auto e = sessionEstimate(state_);
+  const bool g = state_.isGlider();
+  QString s = tr("%1 samples in %2 dives/legs.").arg(r.samples).arg(r.units);
+  if (e) {
+    const analysis::AnalysisReport& a = e->report;
+    s += " " + tr("Ballast state: net buoyancy <b>%1</b>, CG − CB x <b>%2</b>, y <b>%3</b> (model ballast state "
+                  "alone: %4 kg).")
+                   .arg(EstimateText::of(a.net_buoyancy_kg, g ? 3 : 2, tr(" kg")),
+                        EstimateText::of(a.cg_x_mm, 2, tr(" mm")), EstimateText::of(a.cg_y_mm, 2, tr(" mm")),
+                        fixed(r.net_buoyancy_base_kg, g ? 3 : 2));
+    s += "<br>" + EstimateText::planUses(e->source);
+  } else {
+    s += " " + tr("Net buoyancy with the accepted terms <b>%1</b> (ballast state alone: %2 kg).")
+                   .arg(EstimateText::valueSigma(true, r.net_buoyancy_kg, r.net_buoyancy_sigma_kg, 3, tr(" kg")),
+                        fixed(r.net_buoyancy_base_kg, 3));
+  }
+  summary_->setText(s);
 }
 
 int ModelCheckPage::shownChannel() const { return channel_->count() > 0 ? channel_->currentData().toInt() : -1; }
@@ -412,6 +437,7 @@ void ModelCheckPage::updateAccepted() {
   }
   state_.accepted_terms = ids;
   decided_for_ = outcome_.log;
+  if (outcome_.ok && outcome_.result) showSummary();  // the estimate follows the ticks
 }
 
 VehicleProfile ModelCheckPage::configurationVehicle() const {

@@ -21,6 +21,7 @@ class QValueAxis;
 QT_END_NAMESPACE
 
 namespace auv::ui {
+class CalibrationTable;
 
 // Post mission, step 3: the model check (core/discrepancy) on the imported
 // log, in a worker thread with a busy indicator. Shows the recording against
@@ -61,6 +62,7 @@ class ModelCheckPage : public QWizardPage {
   void onFinished(const ModelCheckOutcome& out);
   void showResult();
   void showTerms();
+  void showSummary();  // the ballast state the plan uses, and which estimate it is
   void showWhere();
   void updateAccepted();
   WizardState& state_;
@@ -79,6 +81,7 @@ class ModelCheckPage : public QWizardPage {
   QValueAxis* y_;
   std::array<QLineSeries*, 3> series_{};
   QTableWidget* terms_;
+  CalibrationTable* calibration_;  // what the check calibrated
   QLabel* where_;
   QLabel* save_status_;
 };

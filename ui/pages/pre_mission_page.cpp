@@ -16,6 +16,7 @@
 #include "firstmission/water_conditions.h"
 #include "history/staleness.h"
 #include "history/store.h"
+#include "widgets/estimate_text.h"
 #include "widgets/inputs.h"
 #include "wizard/history_save.h"
 #include "wizard/operator_wizard.h"
@@ -250,8 +251,8 @@ void PreMissionPage::showBasis() {
                                                           : tr("too heavy");
   QString text;
   if (basis_->start.physical) {
-    text = tr("Net buoyancy <b>%1 ± %2 kg</b> (%3) in %4 kg/m³ water at %5 m (%6 °C, %7 PSU).")
-               .arg(signedFixed(e.net_buoyancy_kg, g ? 3 : 2), fixed(e.net_buoyancy_sigma_kg, g ? 3 : 2), state)
+    text = tr("Net buoyancy <b>%1</b> (%2) in %3 kg/m³ water at %4 m (%5 °C, %6 PSU).")
+               .arg(EstimateText::valueSigma(true, e.net_buoyancy_kg, e.net_buoyancy_sigma_kg, g ? 3 : 2, tr(" kg")), state)
                .arg(e.water.density_kgm3, 0, 'f', 2)
                .arg(e.depth_m, 0, 'f', 0)
                .arg(e.water.temperature_degC, 0, 'f', 2)
@@ -262,11 +263,15 @@ void PreMissionPage::showBasis() {
                .arg(signedFixed(e.net_buoyancy_kg, 2), state);
   }
   auto cg = [&](const std::optional<double>& v, double sigma) {
-    return v ? tr("%1 ± %2 mm").arg(signedFixed(units::mToMm(*v), 1), fixed(units::mToMm(sigma), 1)) : tr("not identified");
+    return EstimateText::of(v ? std::optional<double>(units::mToMm(*v)) : std::nullopt, units::mToMm(sigma), 1, tr(" mm"));
   };
   text += " " + tr("CG − CB: x %1, y %2").arg(cg(e.cg_x_m, e.cg_x_sigma_m), cg(e.cg_y_m, e.cg_y_sigma_m));
   if (e.cg_y_basis == "cruise" && e.cg_y_m) text += tr(" (y that levels it at %1 rpm)").arg(e.cruise_rpm, 0, 'f', 0);
-  estimate_->setText(text + ".");
+  text += ".";
+  // Which estimate: this session's (analysis, or with the accepted
+  // model-check terms) or the history's.
+  if (basis_->from_session) text += "<br>" + EstimateText::planUses(basis_->source);
+  estimate_->setText(text);
 
   OperatorWizard* w = wiz();
   QString source = tr("From %1").arg(q(basis_->analysis_name));
@@ -370,12 +375,14 @@ void PreMissionPage::updatePreview() {
     int pieces = 0;
     for (const auto& p : plan->points)
       for (const auto& pc : p.pieces) pieces += std::abs(pc.count);
-    preview_->setText(tr("Plan: %1 piece(s) to handle; afterwards net buoyancy %2 ± %3 kg, pitch %4° ± %5°, "
-                         "roll %6° ± %7° at %8 m.")
+    preview_->setText(tr("Plan: %1 piece(s) to handle; afterwards net buoyancy %2, pitch %3, roll %4 at %5 m.")
                           .arg(pieces)
-                          .arg(signedFixed(plan->predicted.net_buoyancy_kg, g ? 3 : 2), fixed(plan->net_sigma_kg, g ? 3 : 2))
-                          .arg(signedFixed(plan->predicted.pitch_deg, 2), fixed(plan->pitch_sigma_deg, 2))
-                          .arg(signedFixed(plan->predicted.roll_deg, 2), fixed(plan->roll_sigma_deg, 2))
+                          .arg(EstimateText::valueSigma(true, plan->predicted.net_buoyancy_kg, plan->net_sigma_kg,
+                                                        g ? 3 : 2, tr(" kg")),
+                               EstimateText::valueSigma(EstimateText::pitchKnown(*plan), plan->predicted.pitch_deg,
+                                                        plan->pitch_sigma_deg, 2, tr("°")),
+                               EstimateText::valueSigma(EstimateText::rollKnown(*plan), plan->predicted.roll_deg,
+                                                        plan->roll_sigma_deg, 2, tr("°")))
                           .arg(plan->at_points.front().water.depth_m, 0, 'f', 0));
   } else {
     preview_->clear();

@@ -333,6 +333,7 @@ void StartPage::applyConfiguration(const Configuration& c) {
   const bool switching = !state_.configuration_in_history || state_.configuration_id != c.config_id;
   state_.configuration_id = c.config_id;
   state_.payload_note = c.payload_note;
+  state_.bg_mm = c.bg_mm;
   state_.area = c.area;
   state_.water_type = c.water_type;
   state_.configuration_in_history = true;

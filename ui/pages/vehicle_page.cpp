@@ -11,6 +11,7 @@
 #include "history/store.h"
 #include "vehicle/vehicle_catalog.h"
 #include "widgets/inputs.h"
+#include "widgets/number_input.h"
 #include "wizard/operator_wizard.h"
 
 namespace auv::ui {
@@ -50,6 +51,15 @@ VehiclePage::VehiclePage(WizardState& state) : state_(state) {
   payload_ = line("payload", tr("Which payload modules are fitted, in your words."));
   area_ = line("area", tr("Area of operation, e.g. the fjord or the survey site."));
   water_type_ = line("config_water_type", tr("Kind of water, e.g. fjord, coastal, open ocean."));
+  bg_ = new NumberInput(tr("mm"));
+  bg_->setObjectName("bg_mm");
+  bg_->setRange(0.0, 499.0);
+  bg_->setDecimals(1);
+  bg_->setSpecialValueText(tr("not measured"));
+  bg_->setMinimumHeight(32);
+  bg_->setToolTip(tr("How far the centre of gravity is below the centre of buoyancy, from an inclining or roll "
+                     "test. With it the analysis finds the sideways CG offset and the roll from the log; without "
+                     "it they stay not known. Leave empty when not measured."));
   summary_ = new QLabel;
   summary_->setObjectName("summary");
   summary_->setWordWrap(true);
@@ -65,6 +75,9 @@ VehiclePage::VehiclePage(WizardState& state) : state_(state) {
   form->addRow(tr("&Payload:"), payload_);
   form->addRow(tr("&Area:"), area_);
   form->addRow(tr("Water &type:"), water_type_);
+  bg_label_ = new QLabel(tr("B&G (CG below CB):"));
+  bg_label_->setBuddy(bg_->lineEdit());
+  form->addRow(bg_label_, bg_);
   auto* lay = new QVBoxLayout(this);
   lay->addLayout(form);
   lay->addWidget(summary_);
@@ -80,6 +93,7 @@ void VehiclePage::initializePage() {
   payload_->setText(QString::fromStdString(state_.payload_note));
   area_->setText(QString::fromStdString(state_.area));
   water_type_->setText(QString::fromStdString(state_.water_type));
+  bg_->setValue(state_.bg_mm.value_or(0.0));
   // A configuration from the history is one vehicle with one ID: fixed.
   vehicle_->setEnabled(!state_.configuration_in_history);
   config_->setReadOnly(state_.configuration_in_history);
@@ -111,6 +125,9 @@ void VehiclePage::showProfile() {
                           .arg(v.points.size())
                           .arg(v.kind == "glider" ? tr("the tank method (spring scales)") : tr("crane scales")));
     shown_kind_ = v.kind;
+    // Gliders: the roll test is part of the tank weighing.
+    bg_->setVisible(v.kind != "glider");
+    bg_label_->setVisible(v.kind != "glider");
     error_->clear();
   } catch (const InputError& e) {
     shown_kind_.clear();
@@ -124,6 +141,7 @@ void VehiclePage::cleanupPage() {
   state_.payload_note = payload_->text().toStdString();
   state_.area = area_->text().toStdString();
   state_.water_type = water_type_->text().toStdString();
+  storeBg();
   try {
     state_.vehicle = VehicleCatalog(state_.vehicles_dir).load(vehicle_->currentData().toString().toStdString());
   } catch (const InputError&) {
@@ -135,6 +153,9 @@ bool VehiclePage::validatePage() {
   try {
     state_.vehicle = VehicleCatalog(state_.vehicles_dir).load(vehicle_->currentData().toString().toStdString());
     requireValidConfigurationId(id);
+    if (!bg_->commit())
+      throw InputError("BG (CG below CB)", bg_->problem().toStdString(),
+                       "enter the BG of an inclining or roll test in mm, or leave the field empty");
     if (!state_.configuration_in_history) {
       auto* wiz = qobject_cast<OperatorWizard*>(wizard());
       HistoryStore* store = wiz ? wiz->history() : nullptr;
@@ -152,11 +173,21 @@ bool VehiclePage::validatePage() {
   state_.payload_note = payload_->text().toStdString();
   state_.area = area_->text().toStdString();
   state_.water_type = water_type_->text().toStdString();
+  storeBg();
   if (state_.isGlider()) {
     state_.tank.vehicle = state_.vehicle->id;
     if (state_.tank.readings.dry_mass_kg < 1.0) state_.tank.readings.dry_mass_kg = state_.vehicle->mass_kg;
   }
   return true;
+}
+
+void VehiclePage::storeBg() {
+  bg_->commit();
+  const double v = bg_->value();
+  const std::optional<double> bg = v > 0.0 ? std::optional<double>(v) : std::nullopt;
+  // Another BG is another CG y: the analysis must run again with it.
+  if (bg != state_.bg_mm) state_.analysis.reset();
+  state_.bg_mm = bg;
 }
 
 int VehiclePage::nextId() const {

@@ -8,6 +8,7 @@ class QLineEdit;
 class QLabel;
 
 namespace auv::ui {
+class NumberInput;
 
 // Pick the vehicle profile and name the configuration being ballasted. A
 // configuration taken from the history keeps its ID and vehicle (they
@@ -27,12 +28,15 @@ class VehiclePage : public QWizardPage {
  private:
   void showProfile();
   void checkId();
+  void storeBg();  // the BG field into the state (0 = not measured)
   WizardState& state_;
   QComboBox* vehicle_;
   QLineEdit* config_;
   QLineEdit* payload_;
   QLineEdit* area_;
   QLineEdit* water_type_;
+  NumberInput* bg_;
+  QLabel* bg_label_;
   QLabel* summary_;
   QLabel* id_hint_;
   QLabel* error_;

@@ -5,6 +5,7 @@
 #include <QStringList>
 #include <cmath>
 
+#include "widgets/estimate_text.h"
 #include "widgets/inputs.h"
 
 namespace auv::ui {
@@ -24,14 +25,14 @@ QLabel* resultLabel(const char* name) {
 // "mean ± 95 % half-width unit", or "n/a".
 QString meanText(const analysis::MeanEstimate& m, int decimals, const QString& unit, bool sign = true) {
   if (!m.valid() || !std::isfinite(m.mean)) return AnalysisSummary::tr("n/a");
+  decimals = EstimateText::decimalsFor(m.ci95, decimals);  // a small interval is not "± 0.00"
   const QString v = sign ? signedFixed(m.mean, decimals) : fixed(m.mean, decimals);
   const QString ci = std::isfinite(m.ci95) ? QStringLiteral(" ± %1").arg(fixed(m.ci95, decimals)) : QString();
   return v + ci + unit;
 }
 
 QString estimateText(const analysis::EstimatedValue& e, int decimals, const QString& unit) {
-  if (!e.known || !std::isfinite(e.value)) return AnalysisSummary::tr("not identifiable");
-  return QStringLiteral("%1 ± %2%3").arg(signedFixed(e.value, decimals), fixed(e.sigma, decimals), unit);
+  return EstimateText::of(e, decimals, unit);
 }
 
 }  // namespace
@@ -41,6 +42,7 @@ AnalysisSummary::AnalysisSummary() {
   cg_ = resultLabel("cg_offset");
   errors_ = resultLabel("errors");
   water_ = resultLabel("water");
+  source_ = resultLabel("plan_estimate_source");
   grid_ = new QGridLayout;
   grid_->setHorizontalSpacing(16);
   grid_->setVerticalSpacing(2);
@@ -48,6 +50,7 @@ AnalysisSummary::AnalysisSummary() {
   grid_->addWidget(cg_, 0, 1);
   grid_->addWidget(errors_, 1, 0, 1, 2);
   grid_->addWidget(water_, 2, 0, 1, 2);
+  grid_->addWidget(source_, 3, 0, 1, 2);
   grid_->setColumnStretch(0, 3);
   grid_->setColumnStretch(1, 2);
 
@@ -59,7 +62,10 @@ AnalysisSummary::AnalysisSummary() {
   notes_->setTextInteractionFlags(Qt::TextSelectableByMouse);
 }
 
-void AnalysisSummary::show(const analysis::AnalysisReport* report, bool glider, const QString& error) {
+void AnalysisSummary::show(const analysis::AnalysisReport* report, bool glider, const QString& error,
+                           const QString& source) {
+  source_->setText(report ? source : QString());
+  source_->setVisible(report && !source.isEmpty());
   if (!report) {
     net_->setText(tr("<b>No analysis</b>: %1").arg(error.toHtmlEscaped()));
     net_->setStyleSheet("color: #b00020;");
@@ -93,7 +99,7 @@ void AnalysisSummary::show(const analysis::AnalysisReport* report, bool glider, 
                .arg(r.target_density_kgm3, 0, 'f', 2);
   net_->setText(net);
   if (!r.cg_x_mm.known && !r.cg_y_mm.known)
-    cg_->setText(tr("CG − CB: <b>not identifiable</b> (see the notes)"));
+    cg_->setText(tr("CG − CB: <b>%1</b> (see the notes)").arg(EstimateText::notKnown()));
   else
     cg_->setText(tr("CG − CB: x <b>%1</b>, y <b>%2</b>")
                      .arg(estimateText(r.cg_x_mm, 1, tr(" mm")), estimateText(r.cg_y_mm, 1, tr(" mm"))));

@@ -25,8 +25,11 @@ class AnalysisSummary {
   QLabel* notes() const { return notes_; }
 
   // `report` null: says `error` in red instead. A glider's net buoyancy is
-  // shown to the gram and gets the whole width.
-  void show(const analysis::AnalysisReport* report, bool glider, const QString& error);
+  // shown to the gram and gets the whole width. `source`: which estimate the
+  // plan uses, in words (label plan_estimate_source). A quantity not identified
+  // reads "not known", never ± 0.
+  void show(const analysis::AnalysisReport* report, bool glider, const QString& error,
+            const QString& source = QString());
 
  private:
   QGridLayout* grid_;
@@ -34,6 +37,7 @@ class AnalysisSummary {
   QLabel* cg_;
   QLabel* errors_;
   QLabel* water_;
+  QLabel* source_;
   QLabel* notes_;
 };
 

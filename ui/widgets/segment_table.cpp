@@ -1,5 +1,7 @@
 #include "widgets/segment_table.h"
 
+#include "widgets/estimate_text.h"
+
 #include <QHeaderView>
 #include <QTableWidget>
 #include <algorithm>
@@ -12,6 +14,7 @@ namespace {
 
 QString cellText(double mean, double ci, int decimals) {
   if (!std::isfinite(mean)) return QStringLiteral("—");
+  decimals = EstimateText::decimalsFor(ci, decimals);  // a small interval is not "±0.00"
   return std::isfinite(ci) ? QStringLiteral("%1 ±%2").arg(signedFixed(mean, decimals), fixed(ci, decimals))
                            : signedFixed(mean, decimals);
 }

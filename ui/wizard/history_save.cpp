@@ -7,6 +7,7 @@
 #include "firstmission/hugin_first_mission.h"
 #include "history/first_mission_record.h"
 #include "history/transaction.h"
+#include "wizard/pre_mission_inputs.h"
 #include "wizard/session_json.h"
 
 namespace auv::ui {
@@ -19,6 +20,8 @@ void ensureConfiguration(HistoryStore& store, const WizardState& s, TimePoint no
       throw InputError("configuration ID", "'" + s.configuration_id + "' already exists in the history",
                        "pick it on the start page or choose a new ID");
     }
+    // A new roll test (or a corrected BG) belongs to the configuration.
+    if (store.configuration(s.configuration_id)->bg_mm != s.bg_mm) store.setConfigurationBg(s.configuration_id, s.bg_mm);
     return;
   }
   Configuration c;
@@ -28,6 +31,7 @@ void ensureConfiguration(HistoryStore& store, const WizardState& s, TimePoint no
   c.payload_note = s.payload_note;
   c.area = s.area;
   c.water_type = s.water_type;
+  c.bg_mm = s.bg_mm;
   c.created_at = now;
   store.addConfiguration(c);
 }
@@ -97,12 +101,13 @@ RecordId saveMissionToHistory(HistoryStore& store, const WizardState& s, TimePoi
   Transaction tx(store.database());
   ensureConfiguration(store, s, now);
   const RecordId id = store.importMissionFile(s.configuration_id, s.log_file, missionSummaryJson(s), now);
-  // The analysis with its mission: the next session plans from it (pre mission).
-  if (s.analysis) {
+  // The analysis with its mission: the next session plans from it (pre
+  // mission), with the ballast state this session's plan used.
+  if (const auto e = sessionEstimate(s)) {
     AnalysisResult a;
     a.at = now;
     a.mission_id = id;
-    a.result = analysis::toJson(*s.analysis);
+    a.result = analysis::toJson(e->report);
     store.addAnalysisResult(s.configuration_id, a);
   }
   // Terms accepted in this session's model check become the configuration's model.

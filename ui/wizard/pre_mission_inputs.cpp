@@ -23,6 +23,11 @@ std::optional<TimePoint> logStart(const WizardState& s) {
 
 }  // namespace
 
+std::optional<discrepancy::PlanEstimate> sessionEstimate(const WizardState& s) {
+  if (!s.analysis) return std::nullopt;
+  return discrepancy::planEstimate(*s.analysis, s.model_check ? &*s.model_check : nullptr, s.accepted_terms);
+}
+
 bool hasAnalysisToPlanFrom(const WizardState& s, HistoryStore* store, TimePoint now) {
   if (s.analysis) return true;
   if (!store || s.configuration_id.empty()) return false;
@@ -59,9 +64,10 @@ PlanBasis planBasis(const WizardState& s, HistoryStore* store, TimePoint now, Pl
   if (recorded) b.total_mass_kg = recorded->total_mass_kg;
 
   nlohmann::json report;
-  if (s.analysis) {
+  if (const auto e = sessionEstimate(s)) {
     b.from_session = true;
-    report = analysis::toJson(*s.analysis);
+    b.source = e->source;
+    report = analysis::toJson(e->report);
     b.analysis_name = "this session's analysis" + (s.analysis->log_name.empty() ? "" : " of " + s.analysis->log_name);
     b.measured_at = logStart(s);
   } else {
@@ -75,6 +81,7 @@ PlanBasis planBasis(const WizardState& s, HistoryStore* store, TimePoint now, Pl
     b.measured_at = a->at;
     b.analysis_name = "history analysis #" + std::to_string(a->id) + " of " + toIsoUtc(a->at).substr(0, 10);
   }
+  b.report = report;
   std::optional<MeasuredWater> measured;
   if (in_history) {
     if (auto w = store->latestWater(s.configuration_id, now, true); w && w->temperature_degC) {

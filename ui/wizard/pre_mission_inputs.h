@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "discrepancy/plan_estimate.h"
 #include "history/records.h"
 #include "planning/installed_prediction.h"
 #include "planning/plan_sources.h"
@@ -29,7 +30,16 @@ struct PlanBasis {
   std::vector<double> installed_kg;       // now, profile order
   std::string installed_source;           // "as flown in the analysed mission", "history YYYY-MM-DD", ...
   std::optional<double> total_mass_kg;    // recorded vehicle mass with those pieces
+  // Which estimate (this log's analysis, or with the accepted model-check
+  // terms) and the report it is, for its calibration list and manoeuvre.
+  discrepancy::EstimateSource source = discrepancy::EstimateSource::kAnalysis;
+  nlohmann::json report;
 };
+
+// The one estimate of this session (discrepancy/plan_estimate.h): the
+// analysis, with the model check's ballast state once terms are accepted.
+// Empty without an analysis.
+std::optional<discrepancy::PlanEstimate> sessionEstimate(const WizardState& s);
 
 // True when a plan can start: the session has an analysis, or the history
 // has one for the configuration.

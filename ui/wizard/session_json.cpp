@@ -97,6 +97,7 @@ nlohmann::json sessionToJson(const WizardState& s, int page_id, const std::strin
                         {"area", s.area},
                         {"water_type", s.water_type},
                         {"in_history", s.configuration_in_history}};
+  if (s.bg_mm) j["configuration"]["bg_mm"] = *s.bg_mm;
   j["mode"] = s.mode == SessionMode::kPostMission  ? "post_mission"
               : s.mode == SessionMode::kPreMission ? "pre_mission"
                                                    : "first_mission";
@@ -149,6 +150,7 @@ SavedSession sessionFromJson(const std::string& json_text, const std::string& fi
   s.area = c.text("area", "");
   s.water_type = c.text("water_type", "");
   s.configuration_in_history = c.node().value("in_history", false);
+  if (c.has("bg_mm")) s.bg_mm = c.numberIn("bg_mm", 0.1, 499.0);
   const std::string mode = root.text("mode", "first_mission");
   if (mode != "first_mission" && mode != "post_mission" && mode != "pre_mission") {
     root.fail("mode", "unknown mode '" + mode + "'", "use first_mission, post_mission or pre_mission");

@@ -33,6 +33,10 @@ struct WizardState {
   std::string area;
   std::string water_type;
   bool configuration_in_history = false;  // picked on the start page, not new
+  // BG (CG below CB, mm) from an inclining or roll test: with it the analysis
+  // identifies CG y and roll from the log; unset = not measured. Stored with
+  // the configuration in the history.
+  std::optional<double> bg_mm;
 
   SessionMode mode = SessionMode::kFirstMission;
 

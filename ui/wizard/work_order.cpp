@@ -14,6 +14,8 @@
 
 #include "common/input_error.h"
 #include "planning/installed_prediction.h"
+#include "widgets/calibration_table.h"
+#include "widgets/estimate_text.h"
 #include "widgets/inputs.h"
 #include "widgets/weight_map_widget.h"
 
@@ -166,26 +168,32 @@ WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint 
 
   const InstalledPrediction r = predictInstalled(v, p, basis.installed_kg, actual);
   const TrimSpec& spec = v.spec;
+  // A quantity the analysis did not identify is "not known", never ± 0.
+  const bool pitch_known = EstimateText::pitchKnown(p), roll_known = EstimateText::rollKnown(p);
   w.expected << (differs ? WorkOrder::tr("As actually installed, at %1 m:") : WorkOrder::tr("As planned, at %1 m:")).arg(op.water.depth_m, 0, 'f', 0)
              << WorkOrder::tr("Net buoyancy %1 ± %2 kg (band %3 .. %4 kg): %5")
                     .arg(signedFixed(r.net_buoyancy_kg, nd), fixed(r.net_sigma_kg, nd))
                     .arg(fixed(std::max(0.0, spec.net_buoyancy_min_kg), 1), fixed(spec.net_buoyancy_max_kg, 1))
                     .arg(inBand(r.buoyancy_in_band))
-             << WorkOrder::tr("Pitch at rest %1° ± %2° (band ±%3°): %4")
-                    .arg(signedFixed(r.pitch_deg, 2), fixed(r.pitch_sigma_deg, 2), fixed(spec.pitch_tolerance_deg, 1))
-                    .arg(inBand(r.pitch_in_band))
+             << WorkOrder::tr("Pitch at rest %1 (band ±%2°)%3")
+                    .arg(EstimateText::valueSigma(pitch_known, r.pitch_deg, r.pitch_sigma_deg, 2, QStringLiteral("°")),
+                         fixed(spec.pitch_tolerance_deg, 1), pitch_known ? ": " + inBand(r.pitch_in_band) : QString())
              << (r.flight_pitch_deg ? WorkOrder::tr("Pitch in flight at %1 m/s %2° (band ±%3°): %4")
                                             .arg(fixed(p.flight_speed_mps, 1), signedFixed(*r.flight_pitch_deg, 2),
                                                  fixed(spec.pitch_tolerance_deg, 1))
                                             .arg(inBand(r.flight_pitch_in_band.value_or(false)))
                                       : WorkOrder::tr("Pitch in flight: not predicted (no hydrodynamics or cruise speed)"))
-             << WorkOrder::tr("Roll %1° ± %2° (band ±%3°): %4")
-                    .arg(signedFixed(r.roll_deg, 2), fixed(r.roll_sigma_deg, 2), fixed(spec.roll_tolerance_deg, 1))
-                    .arg(inBand(r.roll_in_band))
+             << WorkOrder::tr("Roll %1 (band ±%2°)%3")
+                    .arg(EstimateText::valueSigma(roll_known, r.roll_deg, r.roll_sigma_deg, 2, QStringLiteral("°")),
+                         fixed(spec.roll_tolerance_deg, 1), roll_known ? ": " + inBand(r.roll_in_band) : QString())
              << (r.safe ? WorkOrder::tr("Safe: at least %1 kg light (1.645 σ) at every planned depth.")
                         : WorkOrder::tr("NOT SAFE: less than %1 kg light (1.645 σ) at a planned depth."))
                     .arg(fixed(p.margin_kg, nd));
   for (const auto& x : p.warnings) w.warnings << q(x);
+  if (basis.from_session) w.header << EstimateText::planUses(basis.source);
+  if (basis.report.is_object())
+    w.calibration = CalibrationTable::lines(CalibrationTable::rowsFromJson(basis.report.value("calibration", nlohmann::json::array())));
+  if (p.calibration_manoeuvre) w.manoeuvre = CalibrationTable::manoeuvreLines(*p.calibration_manoeuvre);
   w.signature = WorkOrder::tr("Done by: ______________________   Signature: ______________________   Date: ____________");
   return w;
 }
@@ -231,6 +239,16 @@ void drawWorkOrder(QPainter& painter, const QPaintDevice& device, const WorkOrde
       y += 2 * mm;
       text(WorkOrder::tr("Warnings"), section, 1.0, draw);
       for (const auto& x2 : w.warnings) text(WorkOrder::tr("⚠ %1").arg(x2), body, 0.5, draw);
+    }
+    if (!w.calibration.isEmpty()) {
+      y += 2 * mm;
+      text(WorkOrder::tr("What was calibrated"), section, 1.0, draw);
+      for (const auto& c : w.calibration) text(QStringLiteral("• %1").arg(c), small, 0.3, draw);
+    }
+    if (!w.manoeuvre.isEmpty()) {
+      y += 2 * mm;
+      text(WorkOrder::tr("Calibration manoeuvre for the next mission"), section, 1.0, draw);
+      for (const auto& m : w.manoeuvre) text(QStringLiteral("• %1").arg(m), small, 0.3, draw);
     }
     if (!w.notes.isEmpty()) {
       y += 2 * mm;

@@ -34,6 +34,8 @@ struct WorkOrder {
   QStringList expected;  // predicted results against the bands
   QStringList warnings;
   QStringList notes;     // steps and explanations (a glider's battery and rail moves)
+  QStringList calibration;  // what the analysis calibrated, one constant a line
+  QStringList manoeuvre;    // the calibration manoeuvre for the next mission, when asked for
   WeightMapModel map;    // the top-down map; length_m == 0: none
   QString signature;
 };

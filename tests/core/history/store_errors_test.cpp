@@ -51,7 +51,7 @@ TEST_F(HistoryOpenTest, NewerSchemaIsRefusedAndLeftAlone) {
   const std::string before = sha256OfFile(db_path);
   const std::string msg = openError(db_path);
   EXPECT_TRUE(contains(msg, db_path)) << msg;
-  EXPECT_TRUE(contains(msg, "newer auvballast (schema version 7; this program knows up to 3)")) << msg;
+  EXPECT_TRUE(contains(msg, "newer auvballast (schema version 7; this program knows up to 4)")) << msg;
   EXPECT_TRUE(contains(msg, "update auvballast")) << msg;
   EXPECT_EQ(sha256OfFile(db_path), before);
 }
@@ -89,11 +89,55 @@ TEST_F(HistoryOpenTest, OlderSchemaIsMigratedKeepingTheData) {
               0);
   }
   HistoryStore store(db_path);
-  EXPECT_EQ(store.schemaVersion(), 3);
+  EXPECT_EQ(store.schemaVersion(), 4);
   const auto s = store.lastState("1-2-3", makeUtc(2014, 4, 5));
   ASSERT_TRUE(s && s->last_temperature);
   EXPECT_DOUBLE_EQ(*s->last_temperature->temperature_degC, 6.545581);
   EXPECT_NO_THROW(store.addInstalledState("1-2-3", test::installed(makeUtc(2014, 4, 5), 0, 0, 19.2, 19.2)));
+  EXPECT_EQ(store.integrityCheck(), "ok");
+}
+
+// A history written before BG was a configuration field (schema 3) opens
+// with every record intact, BG "not measured", and then keeps a BG.
+TEST_F(HistoryOpenTest, SchemaThreeGainsBgKeepingEveryRecord) {
+  const std::vector<Migration> up_to_v3(standardMigrations().begin(), standardMigrations().begin() + 3);
+  {
+    HistoryStore old(db_path, up_to_v3);
+    ASSERT_EQ(old.schemaVersion(), 3);
+    Configuration c = hugin("02-01-01", makeUtc(2014, 4, 4, 15, 28));
+    c.payload_note = "HISAS";
+    c.area = "Horten";
+    old.addConfiguration(c);
+    old.addWaterCondition("02-01-01", water(makeUtc(2014, 4, 4, 15, 34), 6.545581, 34.4975));
+    old.addInstalledState("02-01-01", test::installed(makeUtc(2014, 4, 5), 0, 0, 19.2, 19.2));
+    EXPECT_EQ(old.database().queryInt("SELECT count(*) FROM pragma_table_info('configurations') WHERE name = 'bg_mm'"), 0);
+  }
+  HistoryStore store(db_path);
+  EXPECT_EQ(store.schemaVersion(), 4);
+  auto c = store.configuration("02-01-01");
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->payload_note, "HISAS");
+  EXPECT_EQ(c->area, "Horten");
+  EXPECT_EQ(c->created_at, makeUtc(2014, 4, 4, 15, 28));
+  EXPECT_FALSE(c->bg_mm);  // not measured before
+  const auto s = store.lastState("02-01-01", makeUtc(2014, 4, 6));
+  ASSERT_TRUE(s && s->last_temperature && s->installed);
+  EXPECT_DOUBLE_EQ(*s->last_temperature->temperature_degC, 6.545581);
+  ASSERT_EQ(s->installed->points.size(), 4u);
+  EXPECT_DOUBLE_EQ(s->installed->points[2].mass_kg, 19.2);
+  EXPECT_EQ(s->configuration.payload_note, "HISAS");
+
+  store.setConfigurationBg("02-01-01", 21.5);
+  EXPECT_DOUBLE_EQ(*store.configuration("02-01-01")->bg_mm, 21.5);
+  try {
+    store.setConfigurationBg("02-01-01", -3.0);
+    ADD_FAILURE() << "a negative BG was stored";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(contains(e.what(), "BG (CG below CB)")) << e.what();
+  }
+  EXPECT_DOUBLE_EQ(*store.configuration("02-01-01")->bg_mm, 21.5);  // unchanged by the refusal
+  store.setConfigurationBg("02-01-01", std::nullopt);
+  EXPECT_FALSE(store.configuration("02-01-01")->bg_mm);
   EXPECT_EQ(store.integrityCheck(), "ok");
 }
 
@@ -103,16 +147,16 @@ TEST_F(HistoryOpenTest, FailedMigrationLeavesTheFileByteIdentical) {
     old.addConfiguration(hugin("1-2-3", makeUtc(2014, 4, 4, 15, 28)));
   }
   const std::string before = sha256OfFile(db_path);
-  // Steps 2 and 3 (real) and 4 (injected: writes, then fails) are pending.
+  // Steps 2 to 4 (real) and 5 (injected: writes, then fails) are pending.
   std::vector<Migration> steps = standardMigrations();
-  steps.push_back({4, "injected failure", [](Database& db) {
+  steps.push_back({5, "injected failure", [](Database& db) {
                      db.exec("CREATE TABLE half_done(x); INSERT INTO half_done VALUES (1);",
                              "test step");
                      throw std::runtime_error("injected failure after a partial write");
                    }});
   const std::string msg = openError(db_path, &steps);
   EXPECT_TRUE(contains(msg, db_path)) << msg;
-  EXPECT_TRUE(contains(msg, "from schema version 1 to 4: step 4 (injected failure) failed")) << msg;
+  EXPECT_TRUE(contains(msg, "from schema version 1 to 5: step 5 (injected failure) failed")) << msg;
   EXPECT_TRUE(contains(msg, "left exactly as it was")) << msg;
   EXPECT_EQ(sha256OfFile(db_path), before);
 
@@ -125,7 +169,7 @@ TEST_F(HistoryOpenTest, FailedMigrationLeavesTheFileByteIdentical) {
   EXPECT_EQ(sha256OfFile(db_path), before);
 
   HistoryStore store(db_path);  // the real program still opens and upgrades it
-  EXPECT_EQ(store.schemaVersion(), 3);
+  EXPECT_EQ(store.schemaVersion(), 4);
   EXPECT_EQ(store.database().queryInt(
                 "SELECT count(*) FROM sqlite_schema WHERE name IN ('half_done', 'ok_part')"),
             0);

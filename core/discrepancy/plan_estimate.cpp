@@ -1,0 +1,28 @@
+#include "discrepancy/plan_estimate.h"
+
+#include <cmath>
+
+namespace auv::discrepancy {
+namespace {
+
+bool usable(double value, double sigma) { return std::isfinite(value) && std::isfinite(sigma) && sigma > 0.0; }
+
+}  // namespace
+
+PlanEstimate planEstimate(const analysis::AnalysisReport& analysis, const ModelCheckResult* check,
+                          const std::vector<std::string>& accepted_terms) {
+  PlanEstimate out{analysis, EstimateSource::kAnalysis};
+  if (!check || accepted_terms.empty() || analysis.vehicle_kind == "glider") return out;
+  bool any = false;
+  for (const auto& m : check->missing_physics)
+    for (const auto& id : accepted_terms) any = any || m.id == id;
+  if (!any || !usable(check->net_buoyancy_kg, check->net_buoyancy_sigma_kg)) return out;
+  analysis::EstimatedValue& net = out.report.net_buoyancy_kg;
+  net = {true, check->net_buoyancy_kg, check->net_buoyancy_sigma_kg, ""};
+  if (check->has_cg && usable(check->cg_x_mm, check->cg_x_sigma_mm))
+    out.report.cg_x_mm = {true, check->cg_x_mm, check->cg_x_sigma_mm, ""};
+  out.source = EstimateSource::kModelCheck;
+  return out;
+}
+
+}  // namespace auv::discrepancy

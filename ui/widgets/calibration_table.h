@@ -1,0 +1,47 @@
+#pragma once
+// What was calibrated (issue 11): each vehicle constant the analysis or the
+// model check fitted with the ballast state, by name, with its value ± σ,
+// the profile's value and whether this log identified it or it stayed at
+// its prior; and the calibration manoeuvre, when one is asked for. One
+// table for the adjustment and model-check pages, the same lines for the
+// work order.
+#include <QCoreApplication>
+#include <QString>
+#include <QStringList>
+#include <QTableWidget>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "discrepancy/model_check.h"
+
+namespace auv::ui {
+
+struct CalibrationRow {
+  QString name, value, profile;
+  QString unit_note;  // a long unit, said in the tooltip (and the work order) instead of the cell
+  bool identified = false;
+};
+
+class CalibrationTable : public QTableWidget {
+  Q_OBJECT
+
+ public:
+  explicit CalibrationTable(QWidget* parent = nullptr);
+  // One row per constant; none: one row saying nothing was calibrated.
+  void showRows(const std::vector<CalibrationRow>& rows);
+
+  // From a report's `calibration` list (analysis or model check JSON).
+  static std::vector<CalibrationRow> rowsFromJson(const nlohmann::json& list);
+  static std::vector<CalibrationRow> rowsOf(const std::vector<discrepancy::CalibrationValue>& list);
+  // The technician's name of a constant (never its id).
+  static QString nameOf(const std::string& id);
+  // "Heave lift of the hull: 0.93 ± 0.10 × the profile's (profile 1); from this log".
+  static QStringList lines(const std::vector<CalibrationRow>& rows);
+  // The manoeuvre {legs, expected_sigma} as lines: the legs (one line,
+  // "; " between them), then the σ expected after it. Empty when `m` is not one.
+  static QStringList manoeuvreLines(const nlohmann::json& m);
+  static QString source(bool identified);
+};
+
+}  // namespace auv::ui
