@@ -97,7 +97,10 @@ int main(int argc, char** argv) {
       std::printf("%s | %d speeds %d depths | net %+.3f (s %.3f) x %+.2f (s %.2f) mm y %+.3f (s %.3f) mm%s\n",
                   r.truth.describe().c_str(), r.speeds, r.depths, r.net_err_kg, r.net_sigma_kg, r.x_err_mm,
                   r.x_sigma_mm, r.y_err_mm, r.y_sigma_mm,
-                  r.looped ? (std::string(" | log speeds ") + std::to_string(r.log_rpms.size()) + " | one move: net " +
+                  r.looped ? (std::string(" | log speeds ") + std::to_string(r.log_rpms.size()) + " | plan band " +
+                              std::to_string(r.plan_band_lo_kg) + ".." + std::to_string(r.plan_band_hi_kg) +
+                              " net " + std::to_string(r.plan_net_kg) + " pitch " + std::to_string(r.plan_pitch_deg) +
+                              " roll " + std::to_string(r.plan_roll_deg) + " | one move: net " +
                               std::to_string(r.one.net_op_kg) + " (min " + std::to_string(r.one.min_net_kg) + ") pitch " +
                               std::to_string(r.one.pitch_deg) + " roll " + std::to_string(r.one.roll_deg) +
                               (r.one.spec ? " SPEC" : " miss") + " | two: net " + std::to_string(r.two.net_op_kg) +

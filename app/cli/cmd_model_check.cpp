@@ -21,7 +21,10 @@
 #include "discrepancy/profile_update.h"
 #include "discrepancy/vehicle_check.h"
 #include "history/store.h"
+#include "history/configuration_id.h"
 #include "history/timestamp.h"
+#include "workflow/history_calibration.h"
+#include "workflow/plan_inputs_from_history.h"
 #include "missionlog/log_reader.h"
 #include "number_list.h"
 #include "planning/glider_ballast_plan.h"
@@ -80,6 +83,24 @@ int runModelCheck(const ModelCheckOpts& o) {
     }
   }
 
+  // With a configuration: what flew (the history's installed pieces unless
+  // given) and its latest analysed mission, whose known weight change
+  // calibrates the hydrodynamics jointly with this one (issue 11 item 3).
+  std::unique_ptr<HistoryStore> store;
+  if (!o.config.empty()) {
+    requireValidConfigurationId(o.config);
+    store = std::make_unique<HistoryStore>(historyPath(o.history));
+    const HistoryPlanInputs h = planInputsFromHistory(*store, o.config, v, nowUtc());
+    if (!h.configuration_known)
+      throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "'",
+                       "record the configuration first (first-mission or the wizard)");
+    if (a.installed_kg.empty() && h.installed) {
+      a.installed_kg = installedKg(*h.installed, v, o.config);
+      setup.auv.installed_kg = a.installed_kg;
+    }
+    a.history = historyCalibrationMissions(*store, o.config, v, nowUtc(), logName);
+  }
+
   ReadReport readReport;
   const MissionLog log = readLogArgument(o.log, logReadOptions(o.cache_dir), readReport);
   const analysis::AnalysisReport r = aboutFile(logArgumentLabel(o.log), [&] { return analysis::analyzeMission(log, v, a); });
@@ -118,20 +139,25 @@ int runModelCheck(const ModelCheckOpts& o) {
       const nlohmann::json written = discrepancy::profileWithAcceptedTerms(doc, v, mc, logName);
       writeJson(written, out);
       j["model_check"]["profile_written"] = out;
-      if (!o.config.empty()) {
+      if (store) {
         // Also the configuration's model in the history, from which 'plan'
         // and the wizard take the vehicle from now on.
-        HistoryStore store(historyPath(o.history));
-        if (!store.configuration(o.config))
-          throw InputError("config", "'" + o.config + "' is not in the history '" + store.path() + "'",
-                           "record the configuration first (first-mission or the wizard)");
         ModelTerms m;
         m.at = nowUtc();
         m.model = {{"log", logName}, {"accepted", written["model_check"]["accepted"]}, {"profile", written}};
         if (written["model_check"].contains("calibrated")) m.model["calibrated"] = written["model_check"]["calibrated"];
-        store.addModelTerms(o.config, m);
+        store->addModelTerms(o.config, m);
         j["model_check"]["history_config"] = o.config;
       }
+    }
+    if (store) {
+      // The checked mission's analysis (calibrated with the history's
+      // missions): 'plan --config' plans from it, the next mission
+      // calibrates with its steady segments.
+      AnalysisResult rec;
+      rec.at = nowUtc();
+      rec.result = j;
+      j["model_check"]["history_analysis_id"] = store->addAnalysisResult(o.config, rec);
     }
   }
   if (!o.json.empty()) writeJson(j, o.json);
@@ -178,7 +204,9 @@ Command addModelCheckCommand(CLI::App& app) {
                 "Write the accepted terms and the identified calibration constants into a complete copy of the vehicle "
                 "profile (hydrodynamics included)");
   cmd->add_option("--config", o->config,
-                  "With --accept: also save the accepted terms as this configuration's vehicle model in the history");
+                  "Configuration ID: the pieces that flew default to its installed state, the analysis calibrates jointly "
+                  "with its latest analysed mission; with --accept the accepted terms become its vehicle model and this "
+                  "analysis is recorded for 'plan --config'");
   cmd->add_option("--history", o->history, "History database (default: the user's, as for 'plan')");
   cmd->add_option("--out-profile", o->out_profile, "Where --accept writes the profile copy (default <id>.model-check.json)");
   cmd->add_option("--installed", o->installed,

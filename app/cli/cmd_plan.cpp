@@ -26,6 +26,7 @@
 #include "planning/report_consistency.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/vehicle_catalog.h"
+#include "workflow/plan_inputs_from_history.h"
 
 namespace auv::cli {
 namespace {
@@ -66,26 +67,6 @@ struct Sources {
   nlohmann::json report;
 };
 
-std::vector<double> installedFromHistory(HistoryStore& store, const std::string& config, const VehicleProfile& v,
-                                         Sources& s) {
-  const auto st = store.latestInstalled(config, nowUtc());
-  if (!st) {
-    throw InputError("installed", "the history has no installed pieces for configuration " + config,
-                     "give --installed FS,FP,AS,AP (kg at each point, profile order)");
-  }
-  std::vector<double> kg(v.points.size(), 0.0);
-  for (const InstalledPoint& p : st->points) {
-    const auto it = std::find_if(v.points.begin(), v.points.end(), [&](const AdjustmentPoint& a) { return a.name == p.name; });
-    if (it == v.points.end()) {
-      throw InputError("installed", "the history names point '" + p.name + "', which vehicle " + v.id + " does not have",
-                       "give --installed for this vehicle");
-    }
-    kg[static_cast<std::size_t>(it - v.points.begin())] = p.mass_kg;
-  }
-  s.total_mass_kg = st->total_mass_kg;
-  return kg;
-}
-
 PlannedWater plannedWater(const PlanOpts& o, const TrimEstimate& e, const Sources& s, std::string& source) {
   // The last mission's water unless the operator gives it.
   PlannedWater w = lastMissionWater(e, parseNumber(o.latitude, "latitude", "the latitude in degrees"));
@@ -117,72 +98,60 @@ int runPlan(const PlanOpts& o) {
   in.use_optional_pieces = o.optional_pieces;
   in.sigma_factor = parseNumber(o.sigma_factor, "sigma-factor", "k of the safety margin k * sigma, e.g. 1.645");
 
-  // The history is needed for whatever the flags do not give, and to record the plan.
+  // The history is needed for whatever the flags do not give, and to record
+  // the plan; what it gives comes through one core function (the wizard's too).
   std::unique_ptr<HistoryStore> store;
-  std::optional<Configuration> config;
-  std::size_t model_terms = 0;
+  HistoryPlanInputs h;
   const bool need_history = o.installed.empty() || o.report.empty();
   if (need_history || !o.no_save || o.accept) {
     store = std::make_unique<HistoryStore>(historyPath(o.history));
-    config = store->configuration(o.config);
-    if (config && config->vehicle_key != v.id) {
-      throw InputError("vehicle", "configuration " + o.config + " is a " + config->vehicle_name + " in the history",
-                       "use --vehicle " + config->vehicle_key + " or another configuration ID");
-    }
-    // The configuration's vehicle model (terms accepted in model checks):
-    // its hull compressibility and expansion set the buoyancy at other depths.
-    if (config) {
-      if (const auto m = store->latestModelTerms(o.config, nowUtc()); m && m->model.contains("profile")) {
-        v = discrepancy::vehicleFromStoredProfile(m->model["profile"], v, "history model of " + o.config);
-        model_terms = m->model.value("accepted", nlohmann::json::array()).size();
-      }
-    }
-    if (!config && o.accept) {
+    h = planInputsFromHistory(*store, o.config, v, nowUtc());
+    v = h.vehicle;
+    if (!h.configuration_known && o.accept) {
       throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "', so --accept has nothing to update",
                        "create the configuration first: 'auvballast first-mission --weighing FILE.json --config " + o.config +
                            " --history " + store->path() + "' (or crane flags instead of --weighing), then plan again");
     }
-    if (!config && need_history) {
+    if (!h.configuration_known && need_history) {
       throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "'",
                        "give --installed and --report, or record the configuration first ('auvballast first-mission "
                        "... --config " + o.config + " --history FILE' or 'history --import-ballasting-file')");
     }
   }
+  const std::size_t model_terms = h.model_terms;
 
   Sources s;
+  s.total_mass_kg = h.total_mass_kg;
   if (!o.installed.empty()) {
     s.installed_kg = parseNumberList(o.installed, v.points.size(), "installed",
                                      "the kg of adjustment weight now at each point, in profile order");
+  } else if (h.installed) {
+    s.installed_kg = installedKg(*h.installed, v, o.config);
   } else {
-    s.installed_kg = installedFromHistory(*store, o.config, v, s);
+    throw InputError("installed", "the history has no installed pieces for configuration " + o.config,
+                     "give --installed FS,FP,AS,AP (kg at each point, profile order)");
   }
   if (!o.report.empty()) {
     s.report = JsonReader::parseFile(o.report);
     s.report_name = o.report;
     refuseUnknownReportKeys(s.report, s.report_name);
   } else {
-    const auto a = store->latestAnalysis(o.config, nowUtc());
-    if (!a) {
+    if (!h.analysis) {
       throw InputError("report", "the history has no analysis for configuration " + o.config,
-                       "give --report analysis.json (from 'auvballast analyze')");
+                       "give --report analysis.json (from 'auvballast analyze', or record one with "
+                       "'auvballast model-check --accept --config " + o.config + "')");
     }
-    s.report = a->result;
-    s.analysis_id = a->id;
-    s.measured_at = a->at;
-    s.report_name = "history analysis #" + std::to_string(a->id);
+    s.report = h.analysis->result;
+    s.analysis_id = h.analysis->id;
+    s.measured_at = h.analysis->at;
+    s.report_name = "history analysis #" + std::to_string(h.analysis->id);
   }
 
   // An analysis without a physical estimate (e.g. imported from a thesis
   // ballasting file) still carries the deviations the classic table reads;
   // the mass then comes from the recorded total weight, as in the thesis.
-  std::optional<MeasuredWater> measured;
-  std::optional<WaterCondition> last_water;
-  if (store && config) last_water = store->latestWater(o.config, nowUtc(), true);
-  if (last_water && last_water->temperature_degC) {
-    measured = MeasuredWater{*last_water->temperature_degC, last_water->salinity_psu.value_or(35.0)};
-  }
-  const PlanStart start = planStartFromReport(v, s.report, s.report_name, in.policy, s.total_mass_kg, measured);
-  if (!start.physical && last_water) s.measured_at = last_water->measured_at;
+  const PlanStart start = planStartFromReport(v, s.report, s.report_name, in.policy, s.total_mass_kg, h.measured_water);
+  if (!start.physical && h.measured_water_at) s.measured_at = h.measured_water_at;
   in.estimate = start.estimate;
   in.classic_computed_imbalance_kg = start.classic_computed_imbalance_kg;
   in.installed_kg = s.installed_kg;
@@ -203,7 +172,7 @@ int runPlan(const PlanOpts& o) {
   if (model_terms > 0)
     j["notes"].push_back("vehicle model from the history: " + std::to_string(model_terms) + " accepted model-check term(s)");
 
-  if (store && config && !o.no_save) {
+  if (store && h.configuration_known && !o.no_save) {
     Transaction tx(store->database());
     Recommendation r;
     r.at = nowUtc();

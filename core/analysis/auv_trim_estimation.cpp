@@ -403,6 +403,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     ++history_used;
   }
   const SteadyCalibration cal = calibrateSteady(*coeffs, m.W, m.rho, cs, pri);
+  out.history_segments_used = history_used;
   if (history_used > 0)
     out.notes.push_back("calibrated with " + std::to_string(history_used) +
                         " steady segments of earlier missions of this configuration and the known weight changes since");

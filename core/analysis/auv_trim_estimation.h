@@ -84,6 +84,7 @@ struct AuvTrimEstimate {
   double elevator_bias_deg = 0.0, elevator_bias_sigma_deg = 0.0;
   double chi2_per_dof = 0.0;
   std::size_t segments_used = 0;
+  std::size_t history_segments_used = 0;  // steady segments of earlier missions in the calibration
   std::vector<double> segment_net_buoyancy_kg, segment_x_m;  // NaN where not computable
   // Without an elevator channel only W x_G - l (B - W) is determined (l = M_e/Z_e).
   std::optional<double> moment_combination_nm, moment_combination_sigma_nm, plane_lever_m;

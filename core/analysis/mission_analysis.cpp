@@ -12,6 +12,7 @@
 #include "analysis/profile_constants.h"
 #include "analysis/series_tools.h"
 #include "analysis/statistics.h"
+#include "analysis/steady_segment_json.h"
 #include "common/input_error.h"
 #include "common/units.h"
 #include "seawater/seawater.h"
@@ -363,6 +364,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     d["bg_mm"] = units::mToMm(o.bg_m.value_or(v.bg_m));
     d["bg_source"] = o.bg_m ? "--bg-mm" : "profile";
     d["segments_used"] = e.segments_used;
+    if (e.history_segments_used > 0) d["history_segments_used"] = e.history_segments_used;
     d["chi2_per_dof"] = e.chi2_per_dof;
     if (e.buoyancy_identified) d["net_cg_x_correlation"] = e.net_x_correlation;
     if (e.manoeuvre)
@@ -388,6 +390,8 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
                                   {"value_nm", *e.moment_combination_nm},
                                   {"sigma_nm", *e.moment_combination_sigma_nm},
                                   {"plane_lever_m", *e.plane_lever_m}};
+    // What a later mission of this configuration calibrates jointly with.
+    if (!rep.steady_segments.empty()) d["steady_segments"] = steadySegmentsJson(rep.steady_segments);
     rep.details["auv_estimate"] = d;
   } else {
     rep.cg_x_mm.why_not = "not identifiable from this log because a glider's pitch is set by its battery position, "

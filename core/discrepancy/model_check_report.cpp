@@ -138,11 +138,32 @@ void mergeIntoAnalysisJson(nlohmann::json& a, const ModelCheckResult& r) {
   a["missing_physics"] = m["missing_physics"];
   a["calibration"] = m["calibration"];
   a["calibration_findings"] = m["calibration_findings"];
-  a["net_buoyancy_kg"] = m["net_buoyancy_kg"];
-  a["net_buoyancy_sigma_kg"] = m["net_buoyancy_sigma_kg"];
-  if (m.contains("cg_offset_mm")) {
-    a["cg_offset_mm"] = m["cg_offset_mm"];
-    a["cg_offset_sigma_mm"] = m["cg_offset_sigma_mm"];
+  // An analysis calibrated jointly with an earlier mission across a known
+  // weight change (issue 11 item 3) has had a calibration experiment the
+  // check's single-log fit has not: its estimate stays the report's, the
+  // check's is kept beside it.
+  const bool joint = a.contains("details") && a["details"].contains("auv_estimate") &&
+                     a["details"]["auv_estimate"].value("history_segments_used", 0) > 0 &&
+                     a.value("net_buoyancy_kg", nlohmann::json()).is_number();
+  if (joint) {
+    mc["check_estimate"] = {{"net_buoyancy_kg", m["net_buoyancy_kg"]}, {"net_buoyancy_sigma_kg", m["net_buoyancy_sigma_kg"]},
+                            {"cg_offset_mm", m.value("cg_offset_mm", nlohmann::json())}};
+    mc["estimate_source"] = "analysis calibrated with the configuration's earlier mission";
+    // CG y is about roll, which the move does not calibrate: the check's
+    // where the analysis has none.
+    if (m.contains("cg_offset_mm") && a.contains("cg_offset_mm") && a["cg_offset_mm"].is_object() &&
+        a["cg_offset_mm"].value("y", nlohmann::json()).is_null() && m["cg_offset_mm"].value("y", nlohmann::json()).is_number()) {
+      a["cg_offset_mm"]["y"] = m["cg_offset_mm"]["y"];
+      if (!a.contains("cg_offset_sigma_mm") || !a["cg_offset_sigma_mm"].is_object()) a["cg_offset_sigma_mm"] = nlohmann::json::object();
+      a["cg_offset_sigma_mm"]["y"] = m["cg_offset_sigma_mm"].value("y", nlohmann::json());
+    }
+  } else {
+    a["net_buoyancy_kg"] = m["net_buoyancy_kg"];
+    a["net_buoyancy_sigma_kg"] = m["net_buoyancy_sigma_kg"];
+    if (m.contains("cg_offset_mm")) {
+      a["cg_offset_mm"] = m["cg_offset_mm"];
+      a["cg_offset_sigma_mm"] = m["cg_offset_sigma_mm"];
+    }
   }
   a["model_check"] = mc;
 }

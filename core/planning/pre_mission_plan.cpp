@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 
 #include "ballast/ballast_solver.h"
 #include "ballast/mass_quanta.h"
@@ -27,6 +28,14 @@ std::vector<double> usableSizes(const VehicleProfile& v, bool optional) {
   std::sort(s.begin(), s.end());
   s.erase(std::unique(s.begin(), s.end()), s.end());
   return s;
+}
+
+// The finest step between the totals the kit can add or remove: the
+// greatest common divisor of the piece sizes.
+double totalStepKg(const std::vector<double>& sizes) {
+  std::int64_t g = 0;
+  for (double s : sizes) g = std::gcd(g, toQuanta(s));
+  return g > 0 ? toKg(g) : sizes.front();
 }
 
 std::string roleOf(const PlannedWater& w, const PlannedWater& operating) {
@@ -272,23 +281,36 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     // net buoyancy, the hull no lift): with the calibrated model the solver
     // aims the CG there rather than over the CB, so the vehicle flies level
     // at every speed (thesis §5.3.2 judges pitch in flight).
-    if (in.estimate.calibrated_hydrodynamics) {
-      if (const std::optional<double> l = planeLeverM(v, in.estimate.calibrated_hydrodynamics)) {
-        const double net_aim = 0.5 * (out.band_lo_kg + out.band_hi_kg);
+    std::optional<double> lever_m;
+    if (in.estimate.calibrated_hydrodynamics) lever_m = planeLeverM(v, in.estimate.calibrated_hydrodynamics);
+    const double band_hi0 = pr.spec.net_buoyancy_max_kg;
+    // The level-flight CG moves with the net buoyancy the move ends at
+    // (l dB / W: about 1 deg of pitch per 0.2 kg on HUGIN), which the kit's
+    // pieces decide: aim at the band centre, then again at the net the
+    // solver reached until the two agree.
+    double net_aim = 0.5 * (out.band_lo_kg + out.band_hi_kg);
+    for (int aim = 0; aim < 3; ++aim) {
+      pr.spec.net_buoyancy_max_kg = band_hi0;
+      if (lever_m) {
         // The mass after the move is not known before solving; a few kg in
         // 1500 change x by < 0.5 %.
-        const double dx = *l * net_aim / out.vehicle.mass.mass_kg;
-        pr.cb_m.x() += dx;
+        pr.cb_m.x() = v.cb_m.x() + *lever_m * net_aim / out.vehicle.mass.mass_kg;
         out.details["flight_level_cg_x_mm"] = units::mToMm(pr.cb_m.x() - v.cb_m.x());
       }
-    }
-    // No kit total inside [lo, hi]: the solver would take the nearest, which
-    // may lie under the safety margin. Widen the band upward, one smallest
-    // piece at a time, until the answer is safe or nothing more is removable.
-    for (int widen = 0; widen <= 8; ++widen) {
-      sol = solveBallast(pr);
-      if (sol.net_buoyancy_kg >= out.band_lo_kg - 1e-6) break;
-      pr.spec.net_buoyancy_max_kg += pr.piece_sizes_kg.front();
+      // No kit total inside [lo, hi]: the solver would take the nearest, which
+      // may lie under the safety margin. Widen the band upward by the finest
+      // step the kit's totals have (0.1 kg for 0.5 and 1.2 kg pieces), so the
+      // answer stays as close above the margin as the kit allows, until it is
+      // safe or the band has grown by eight smallest pieces.
+      const double step_kg = totalStepKg(pr.piece_sizes_kg);
+      const double widen_max_kg = 8.0 * pr.piece_sizes_kg.front();
+      for (double widened = 0.0;; widened += step_kg) {
+        sol = solveBallast(pr);
+        if (sol.net_buoyancy_kg >= out.band_lo_kg - 1e-6 || widened >= widen_max_kg - 1e-9) break;
+        pr.spec.net_buoyancy_max_kg += step_kg;
+      }
+      if (!lever_m || std::abs(sol.net_buoyancy_kg - net_aim) < 0.02) break;
+      net_aim = sol.net_buoyancy_kg;
     }
     out.band_hi_kg = pr.spec.net_buoyancy_max_kg;
     out.delta = sol.delta;

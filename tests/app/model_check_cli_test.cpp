@@ -6,7 +6,10 @@
 // and never the propeller torque as missing physics (item 6).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <unistd.h>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
@@ -66,6 +69,104 @@ TEST(ModelCheckCli, AcceptWritesAWholeVehicleThatAnalyzeUses) {
   EXPECT_EQ(a.out.find("did not identify the net buoyancy"), std::string::npos);
   // The truth at the start: +3.25 kg light (the simulator's own report for this plan and seed).
   EXPECT_NEAR(aj["net_buoyancy_kg"].get<double>(), 3.25, 0.5);
+}
+
+// Issue 11 items 3 and 7 through the CLI: 'model-check --accept --config'
+// records the mission's calibrated analysis and the configuration's model,
+// 'plan --config' plans from them (one core gathering, the wizard's too),
+// and the next mission's model check calibrates jointly with the first
+// across the known move, which narrows the net buoyancy.
+TEST(ModelCheckCli, AcceptIntoAConfigurationThenPlanThenTheNextMissionCalibratesWithTheFirst) {
+  const std::string h = tmp("flow.sqlite"), plan = tmp("flow_plan.json");
+  ASSERT_EQ(runCli("first-mission --weighing " + std::string(AUV_RESOURCE_DIR) + "/examples/hugin1000_first_mission.json" +
+                   " --config 7-1-1 --history " + h).code, 0);
+  // Three propeller speeds at two depths; the vehicle is 3.5 kg lighter and
+  // its CG 6 mm further forward than its profile says (the analysis is not told).
+  auto missionPlan = [&](const std::string& installed) {
+    std::ofstream(plan) << R"({
+  "format": "auvballast-mission-plan", "version": 1, "vehicle": "hugin1000",
+  "water": { "cast": [ { "depth_m": 0, "temperature_degC": 9, "salinity_psu": 34 },
+                       { "depth_m": 100, "temperature_degC": 7, "salinity_psu": 35 } ], "max_depth_m": 150 },
+  "installed_kg": [)" + installed + R"(],
+  "initial": { "depth_m": 30, "speed_mps": 2.0 },
+  "legs": [ { "type": "depth", "depth_m": 30, "prop_demand": 130, "duration_s": 400 },
+            { "type": "depth", "depth_m": 30, "prop_demand": 160, "duration_s": 400 },
+            { "type": "depth", "depth_m": 30, "prop_demand": 190, "duration_s": 400 },
+            { "type": "depth", "depth_m": 70, "prop_demand": 190, "duration_s": 400 },
+            { "type": "depth", "depth_m": 70, "prop_demand": 160, "duration_s": 400 },
+            { "type": "depth", "depth_m": 70, "prop_demand": 130, "duration_s": 400 } ],
+  "options": { "trace_interval_s": 1.0, "seed": 11,
+               "noise": { "depth_m": 0.02, "pitch_deg": 0.05, "roll_deg": 0.05, "speed_mps": 0.01 } }
+})";
+  };
+  const std::string log1 = tmp("flow1.csv"), log2 = tmp("flow2.csv");
+  missionPlan("14.4, 14.4, 19.2, 19.2");
+  ASSERT_EQ(runCli("simulate --vehicle hugin1000 --plan " + plan + " --ballast-error 3.5,6 --out " + log1).code, 0);
+  auto r = runCli("model-check --vehicle hugin1000 --log " + log1 + " --accept --config 7-1-1 --history " + h +
+                  " --out-profile " + tmp("flow.model-check.json") + " --json " + tmp("flow_mc1.json"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json mc1 = readJson(tmp("flow_mc1.json"));
+  ASSERT_TRUE(mc1["net_buoyancy_kg"].is_number()) << mc1.dump().substr(0, 400);
+  EXPECT_EQ(mc1["model_check"]["history_config"], "7-1-1");
+  const auto id1 = mc1["model_check"]["history_analysis_id"].get<long long>();
+  EXPECT_EQ(mc1["details"]["installed_kg"], nlohmann::json({14.4, 14.4, 19.2, 19.2}));  // what the history says flew
+
+  r = runCli("plan --vehicle hugin1000 --config 7-1-1 --history " + h + " --optional-pieces --accept --json -");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json p1 = nlohmann::json::parse(r.out);
+  EXPECT_EQ(p1["sources"]["analysis"], "history analysis #" + std::to_string(id1));
+  EXPECT_EQ(p1["sources"]["installed"], "history");
+  // The plan starts from the model check's own estimate and flies the
+  // calibrated hydrodynamics (the level-flight pitch needs them).
+  EXPECT_NEAR(p1["estimate"]["net_buoyancy_kg"].get<double>(), mc1["net_buoyancy_kg"].get<double>(), 1e-9);
+  bool model_note = false;
+  for (const auto& n : p1["notes"]) model_note = model_note || n.get<std::string>().find("vehicle model from the history") != std::string::npos;
+  EXPECT_TRUE(model_note) << p1["notes"].dump();
+  std::vector<double> after;
+  for (const auto& pt : p1["recommendation"]["points"]) after.push_back(pt["add_kg"].get<double>());
+  const std::vector<double> before{14.4, 14.4, 19.2, 19.2};
+  std::string installed2;
+  double moved = 0.0;
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    moved += std::abs(after[i]);
+    installed2 += (i ? "," : "") + std::to_string(before[i] + after[i]);
+  }
+  ASSERT_GT(moved, 1.0);  // a real move: the known change that calibrates
+
+  // The second mission, same vehicle with the pieces the plan moved.
+  missionPlan(installed2);
+  const auto sim2 = runCli("simulate --vehicle hugin1000 --plan " + plan + " --ballast-error 3.5,6 --out " + log2);
+  ASSERT_EQ(sim2.code, 0) << sim2.err;
+  // The simulator's own account of the vehicle it flew: "CG - CB x +6.16 y ...".
+  const std::size_t at = sim2.out.find("CG - CB x ");
+  ASSERT_NE(at, std::string::npos) << sim2.out;
+  const double cg_x_truth_mm = std::stod(sim2.out.substr(at + 10));
+  r = runCli("model-check --vehicle hugin1000 --log " + log2 + " --accept --config 7-1-1 --history " + h +
+             " --out-profile " + tmp("flow.model-check.json") + " --json " + tmp("flow_mc2.json"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json mc2 = readJson(tmp("flow_mc2.json"));
+  bool joint = false;
+  for (const auto& n : mc2["notes"])
+    joint = joint || n.get<std::string>().find("steady segments of earlier missions") != std::string::npos;
+  EXPECT_TRUE(joint) << mc2["notes"].dump();
+  EXPECT_LT(mc2["net_buoyancy_sigma_kg"].get<double>(), 0.5 * mc1["net_buoyancy_sigma_kg"].get<double>());
+  EXPECT_EQ(mc2["model_check"]["estimate_source"], "analysis calibrated with the configuration's earlier mission");
+  // The joint calibration finds the CG x the simulator flew (+6.16 mm for
+  // this plan, seed and ballast error; the first mission's vehicle had
+  // +19.67 mm) within two sigma plus the simulator's printed 0.01 mm.
+  EXPECT_NEAR(mc2["cg_offset_mm"]["x"].get<double>(), cg_x_truth_mm,
+              2.0 * mc2["cg_offset_sigma_mm"]["x"].get<double>() + 0.01);
+  EXPECT_TRUE(mc2["cg_offset_mm"]["y"].is_number());
+  // The plan's prediction for mission 2 (3.5 kg light plus the move, in
+  // mission 1's water) and mission 2's own joint estimate agree within
+  // their sigmas.
+  const double predicted = p1["predicted"]["net_buoyancy_kg"].get<double>();
+  const double s = std::hypot(p1["predicted"]["net_buoyancy_sigma_kg"].get<double>(), mc2["net_buoyancy_sigma_kg"].get<double>());
+  EXPECT_NEAR(mc2["net_buoyancy_kg"].get<double>(), predicted, 3.0 * s + 0.3);
+  r = runCli("plan --vehicle hugin1000 --config 7-1-1 --history " + h + " --optional-pieces --json -");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["sources"]["analysis"],
+            "history analysis #" + std::to_string(mc2["model_check"]["history_analysis_id"].get<long long>()));
 }
 
 }  // namespace

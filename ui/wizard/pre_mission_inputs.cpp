@@ -6,6 +6,7 @@
 #include "common/input_error.h"
 #include "history/store.h"
 #include "weighing/slocum_layout.h"
+#include "workflow/plan_inputs_from_history.h"
 
 namespace auv::ui {
 namespace {
@@ -58,10 +59,12 @@ PlanBasis planBasis(const WizardState& s, HistoryStore* store, TimePoint now, Pl
   if (!s.vehicle) throw InputError("vehicle", "no vehicle chosen", "go back to the vehicle page");
   const VehicleProfile& v = *s.vehicle;
   PlanBasis b;
+  // What the history holds for the configuration: the same core gathering
+  // as 'auvballast plan --config'.
   const bool in_history = store && !s.configuration_id.empty() && store->configuration(s.configuration_id).has_value();
-  std::optional<InstalledState> recorded;
-  if (in_history) recorded = store->latestInstalled(s.configuration_id, now);
-  if (recorded) b.total_mass_kg = recorded->total_mass_kg;
+  HistoryPlanInputs h;
+  if (in_history) h = planInputsFromHistory(*store, s.configuration_id, v, now);
+  b.total_mass_kg = h.total_mass_kg;
 
   nlohmann::json report;
   if (const auto e = sessionEstimate(s)) {
@@ -71,31 +74,26 @@ PlanBasis planBasis(const WizardState& s, HistoryStore* store, TimePoint now, Pl
     b.analysis_name = "this session's analysis" + (s.analysis->log_name.empty() ? "" : " of " + s.analysis->log_name);
     b.measured_at = logStart(s);
   } else {
-    const auto a = in_history ? store->latestAnalysis(s.configuration_id, now) : std::nullopt;
-    if (!a) {
+    if (!h.analysis) {
       throw InputError("analysis", "configuration " + s.configuration_id + " has no analysed mission in the history",
                        "run the post-mission mode on a log of this configuration first");
     }
-    report = a->result;
-    b.analysis_id = a->id;
-    b.measured_at = a->at;
-    b.analysis_name = "history analysis #" + std::to_string(a->id) + " of " + toIsoUtc(a->at).substr(0, 10);
+    report = h.analysis->result;
+    b.analysis_id = h.analysis->id;
+    b.measured_at = h.analysis->at;
+    b.analysis_name = "history analysis #" + std::to_string(h.analysis->id) + " of " + toIsoUtc(h.analysis->at).substr(0, 10);
   }
   b.report = report;
-  std::optional<MeasuredWater> measured;
-  if (in_history) {
-    if (auto w = store->latestWater(s.configuration_id, now, true); w && w->temperature_degC) {
-      measured = MeasuredWater{*w->temperature_degC, w->salinity_psu.value_or(35.0)};
-      if (!report.contains("net_buoyancy_kg") || !report["net_buoyancy_kg"].is_number()) b.measured_at = w->measured_at;
-    }
-  }
+  const std::optional<MeasuredWater> measured = h.measured_water;
+  if (measured && (!report.contains("net_buoyancy_kg") || !report["net_buoyancy_kg"].is_number()))
+    b.measured_at = h.measured_water_at;
   b.start = planStartFromReport(v, report, b.analysis_name, policy, b.total_mass_kg, measured);
 
   b.installed_kg = installedNow(s);
   if (s.analysis && s.mission_installed_kg.size() == v.points.size()) {
     b.installed_source = "as flown in the analysed mission";
-  } else if (recorded) {
-    b.installed_source = "history, " + toIsoUtc(recorded->installed_at).substr(0, 10);
+  } else if (h.installed) {
+    b.installed_source = "history, " + toIsoUtc(h.installed->installed_at).substr(0, 10);
   } else {
     b.installed_source = "as entered";
   }

@@ -182,6 +182,8 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   r.plan_band_lo_kg = plan.band_lo_kg;
   r.plan_band_hi_kg = plan.band_hi_kg;
   r.plan_net_kg = plan.predicted.net_buoyancy_kg;
+  r.plan_pitch_deg = plan.flight_pitch_after_deg.value_or(plan.predicted.pitch_deg);
+  r.plan_roll_deg = plan.predicted.roll_deg;
   const Flown f2 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after), err, seed * 7 + 2, after);
   // Mission 2 analysed with mission 1 as history (the known move calibrates).
   analysis::AnalysisOptions a2;

@@ -1,0 +1,27 @@
+#pragma once
+// The earlier missions of a configuration as calibration experiments for
+// the next analysis (issue 11 item 3): the steady segments its latest
+// analysis recorded (details.auv_estimate.steady_segments) and the pieces
+// installed then (details.installed_kg). With the pieces installed now, the
+// known change of mass and moment between them calibrates the hydrodynamics
+// jointly with the ballast state.
+#include <string>
+#include <vector>
+
+#include "analysis/mission_analysis.h"
+#include "history/timestamp.h"
+#include "vehicle/vehicle_profile.h"
+
+namespace auv {
+
+class HistoryStore;
+
+// Empty when the configuration has no analysed AUV mission with steady
+// segments and installed pieces of this vehicle's points. An analysis of
+// `current_log` (the log about to be analysed, as its report names it) is
+// not an earlier mission: its segments would count twice.
+std::vector<analysis::HistoryMission> historyCalibrationMissions(HistoryStore& store, const std::string& config_id,
+                                                                 const VehicleProfile& v, TimePoint now,
+                                                                 const std::string& current_log);
+
+}  // namespace auv
