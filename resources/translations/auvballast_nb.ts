@@ -3038,4 +3038,524 @@
         <translation>Ikke lagret: %1</translation>
     </message>
 </context>
+<context>
+    <name>Advice</name>
+    <message>
+        <source>No steady dive or climb long enough was found: nothing to estimate from.</source>
+        <translation>Fant ingen stødig dykk eller stigning som var lang nok: ingenting å estimere fra.</translation>
+    </message>
+    <message>
+        <source>No steady level flight of at least %1 s was found: errors and estimates are not available.</source>
+        <translation>Fant ingen stødig planflyging på minst %1 s: avvik og estimater er ikke tilgjengelige.</translation>
+    </message>
+    <message>
+        <source>%1: %2 interval(s), %3 s left out of the steady windows.</source>
+        <translation>%1: %2 intervall, %3 s holdt utenfor de stødige vinduene.</translation>
+    </message>
+    <message>
+        <source>measured minus commanded, during glides whose command has the phase's sign</source>
+        <translation>målt minus beordret, i glid der ordren har fasens fortegn</translation>
+    </message>
+    <message>
+        <source>measured minus commanded, in steady level flight</source>
+        <translation>målt minus beordret, i stødig planflyging</translation>
+    </message>
+    <message>
+        <source>pitch at steady depth (the log has no commanded pitch; level flight should be at 0°)</source>
+        <translation>stamp på stødig dybde (loggen har ingen beordret stamp; planflyging skal være på 0°)</translation>
+    </message>
+    <message>
+        <source>The log has no commanded depth: the depth error is not available.</source>
+        <translation>Loggen har ingen beordret dybde: dybdeavviket er ikke tilgjengelig.</translation>
+    </message>
+    <message>
+        <source>%1 CTD samples outside the EOS-80 range were not used for the density.</source>
+        <translation>%1 CTD-målinger utenfor gyldighetsområdet til EOS-80 ble ikke brukt til tettheten.</translation>
+    </message>
+    <message>
+        <source>No in-situ density could be computed (no temperature and salinity or density in the log): %1 kg/m³ assumed.</source>
+        <translation>Kunne ikke beregne tetthet in situ (loggen har verken temperatur og saltholdighet eller tetthet): %1 kg/m³ er antatt.</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: a glider's pitch is set by its battery position, not by a fixed CG (use the tank or pitch-trim procedure).</source>
+        <translation>Kan ikke bestemmes fra denne loggen: en glider sin stamp settes av batteriposisjonen, ikke av et fast tyngdepunkt (bruk tank- eller stamptrimprosedyren).</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: the glider's roll is set by its roll mass (use the tank procedure).</source>
+        <translation>Kan ikke bestemmes fra denne loggen: gliderens rull settes av rullevekten (bruk tankprosedyren).</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: it has no pump volume (the buoyancy engine's volume).</source>
+        <translation>Kan ikke bestemmes fra denne loggen: den har ikke pumpevolum (oppdriftsmotorens volum).</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: it has no pitch.</source>
+        <translation>Kan ikke bestemmes fra denne loggen: den har ikke stamp.</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: no steady dive or climb was found.</source>
+        <translation>Kan ikke bestemmes fra denne loggen: fant ingen stødig dykk eller stigning.</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: fewer than 10 steady-glide samples deeper than %1 m with a pitch of at least %2°.</source>
+        <translation>Kan ikke bestemmes fra denne loggen: færre enn 10 målinger i stødig glid dypere enn %1 m med stamp på minst %2°.</translation>
+    </message>
+    <message>
+        <source>The log gives the mass as %1 kg but the vehicle profile has %2 kg: the fit uses the profile's mass (it matters only through density changes).</source>
+        <translation>Loggen oppgir massen som %1 kg, men fartøyprofilen har %2 kg: tilpasningen bruker profilens masse (den betyr bare noe gjennom tetthetsendringer).</translation>
+    </message>
+    <message>
+        <source>The glider flight-model fit did not converge: %1</source>
+        <translation>Tilpasningen av gliderens flymodell konvergerte ikke: %1</translation>
+    </message>
+    <message>
+        <source>The glider flight-model constants are the Slocum defaults (wing area 0.1 m², lift slope 7.53 per rad, induced drag 10.5 per rad²): give this glider's flight model in its vehicle profile.</source>
+        <translation>Konstantene i gliderens flymodell er standardverdiene for Slocum (vingeareal 0,1 m², løftestigning 7,53 per rad, indusert motstand 10,5 per rad²): legg inn denne gliderens flymodell i fartøyprofilen.</translation>
+    </message>
+    <message>
+        <source>The hull compressibility is not in the vehicle profile: 5e-6 per dbar is used.</source>
+        <translation>Skrogets kompressibilitet står ikke i fartøyprofilen: 5e-6 per dbar brukes.</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: no steady segment has roll samples.</source>
+        <translation>Kan ikke bestemmes fra denne loggen: ingen stødige segmenter har rullmålinger.</translation>
+    </message>
+    <message>
+        <source>The log has no propeller speed: CG y assumes the roll at cruise is static; any propeller reaction torque is included in it.</source>
+        <translation>Loggen har ikke propellturtall: tyngdepunkt y antar at rullen i marsjfart er statisk; et eventuelt reaksjonsmoment fra propellen er tatt med i den.</translation>
+    </message>
+    <message>
+        <source>All steady segments run the propeller at about the same speed, so its reaction torque cannot be told from a CG offset: CG y is the offset that levels the vehicle at this cruise speed, not the static CG.</source>
+        <translation>Alle stødige segmenter kjører propellen på omtrent samme turtall, så reaksjonsmomentet kan ikke skilles fra et forskjøvet tyngdepunkt: tyngdepunkt y er forskyvningen som holder fartøyet på rett kjøl i denne marsjfarten, ikke det statiske tyngdepunktet.</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: a steady roll gives y = BG tan(roll), and BG (the CG height below the CB) cannot be measured from the log. Enter BG from an inclining or roll test for this configuration (static roll %1°).</source>
+        <translation>Kan ikke bestemmes fra denne loggen: en stødig rull gir y = BG tan(rull), og BG (tyngdepunktets høyde under oppdriftssenteret) kan ikke måles fra loggen. Legg inn BG fra en krengeprøve eller rulletest for denne konfigurasjonen (statisk rull %1°).</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: no steady level flight long enough was found.</source>
+        <translation>Kan ikke bestemmes fra denne loggen: fant ingen stødig planflyging som var lang nok.</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: it has no speed (the lift and moment that balance the buoyancy grow with the speed squared).</source>
+        <translation>Kan ikke bestemmes fra denne loggen: den har ikke fart (løftet og momentet som balanserer oppdriften vokser med kvadratet av farten).</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: no steady segment has both speed and pitch.</source>
+        <translation>Kan ikke bestemmes fra denne loggen: ingen stødige segmenter har både fart og stamp.</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: it has no elevator (stern-plane) angle, so each steady segment only fixes a moment about the planes' centre of pressure (%1 m from the CB). Record the elevator angle.</source>
+        <translation>Kan ikke bestemmes fra denne loggen: den har ikke dybderorvinkel, så hvert stødige segment bestemmer bare et moment om rorenes trykksenter (%1 m fra oppdriftssenteret). Logg dybderorvinkelen.</translation>
+    </message>
+    <message>
+        <source>Calibrated with %1 steady segments of earlier missions of this configuration and the known weight changes since.</source>
+        <translation>Kalibrert med %1 stødige segmenter fra tidligere oppdrag med denne konfigurasjonen og de kjente vektendringene siden.</translation>
+    </message>
+    <message>
+        <source>Not identifiable from this log: the steady segments do not determine the heave and pitch balance.</source>
+        <translation>Kan ikke bestemmes fra denne loggen: de stødige segmentene bestemmer ikke balansen i hiv og stamp.</translation>
+    </message>
+    <message>
+        <source>Elevator zero offset assumed 0 ± %1° (included in the uncertainties): the steady segments do not span enough speeds to tell it from the net buoyancy.</source>
+        <translation>Dybderorets nullpunktsavvik er antatt 0 ± %1° (tatt med i usikkerhetene): de stødige segmentene spenner ikke over nok hastigheter til å skille det fra netto oppdrift.</translation>
+    </message>
+    <message>
+        <source>The plane coefficients were converted to the log's elevator sign (trailing edge down positive).</source>
+        <translation>Rorkoeffisientene ble regnet om til loggens fortegn for dybderoret (bakkant ned positiv).</translation>
+    </message>
+    <message>
+        <source>The vehicle's hydrodynamics were calibrated together with the ballast state (%1 parameters determined by the log).</source>
+        <translation>Fartøyets hydrodynamikk ble kalibrert sammen med ballasttilstanden (%1 parametere bestemt av loggen).</translation>
+    </message>
+    <message>
+        <source>The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients).</source>
+        <translation>Usikkerhetene kommer fra den kalibreringen (%1 % usikkerhet på forhånd per gruppe av hydrodynamiske koeffisienter).</translation>
+    </message>
+    <message>
+        <source>The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients; the Munk moment's form unknown).</source>
+        <translation>Usikkerhetene kommer fra den kalibreringen (%1 % usikkerhet på forhånd per gruppe av hydrodynamiske koeffisienter; formen på Munk-momentet er ukjent).</translation>
+    </message>
+    <message>
+        <source>BG from the vehicle profile (%1 mm ± %2 %) sets the scale of the pitch moments; BG from a roll test sharpens CG x.</source>
+        <translation>BG fra fartøyprofilen (%1 mm ± %2 %) bestemmer skalaen på stampmomentene; BG fra en rulletest gjør tyngdepunkt x skarpere.</translation>
+    </message>
+    <message>
+        <source>No change: the vehicle is already as good as the kit allows.</source>
+        <translation>Ingen endring: fartøyet er allerede så godt som vektsettet tillater.</translation>
+    </message>
+    <message>
+        <source>Next mission at %1: from net buoyancy %2, pitch %3, roll %4 to %5 ± %6, pitch %7 ± %8, roll %9 ± %10 (1 σ).</source>
+        <translation>Neste oppdrag ved %1: fra netto oppdrift %2, stamp %3, rull %4 til %5 ± %6, stamp %7 ± %8, rull %9 ± %10 (1 σ).</translation>
+    </message>
+    <message>
+        <source>Mass %1 from the last mission: %2 displaced at %3, %4, %5 minus the measured net buoyancy %6.</source>
+        <translation>Masse %1 fra forrige oppdrag: %2 fortrengt ved %3, %4, %5 minus målt netto oppdrift %6.</translation>
+    </message>
+    <message>
+        <source>Safety margin %1 = %2 × σ %3 (estimate and water): the change keeps at least that much net buoyancy at every planned point.</source>
+        <translation>Sikkerhetsmargin %1 = %2 × σ %3 (estimat og vann): endringen beholder minst så mye netto oppdrift i hvert planlagte punkt.</translation>
+    </message>
+    <message>
+        <source>CG x was not identified from the log: the plan assumes it at the CB and keeps the fore-aft balance. Check pitch on the next mission.</source>
+        <translation>Tyngdepunkt x ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder balansen forut-akter. Kontroller stampen på neste oppdrag.</translation>
+    </message>
+    <message>
+        <source>CG y was not identified from the log: the plan assumes it at the CB and keeps the side balance. Check roll on the next mission.</source>
+        <translation>Tyngdepunkt y ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder sidebalansen. Kontroller rullen på neste oppdrag.</translation>
+    </message>
+    <message>
+        <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4.</source>
+        <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4.</translation>
+    </message>
+    <message>
+        <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4: it would sink if it lost power there.</source>
+        <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4: det ville synke om det mistet strømmen der.</translation>
+    </message>
+    <message>
+        <source>Net buoyancy %1 at the operating depth is above the band (%2) because the safety margin (%3) and the less buoyant planned points (%4 less) come first.</source>
+        <translation>Netto oppdrift %1 på operasjonsdybden er over båndet (%2) fordi sikkerhetsmarginen (%3) og de planlagte punktene med mindre oppdrift (%4 mindre) går foran.</translation>
+    </message>
+    <message>
+        <source>The net buoyancy band cannot be reached with this kit while keeping the safety margin: no combination of pieces lands between %1 and %2; the nearest safe one is %3.</source>
+        <translation>Båndet for netto oppdrift kan ikke nås med dette vektsettet uten å gi opp sikkerhetsmarginen: ingen kombinasjon av lodd lander mellom %1 og %2; den nærmeste sikre er %3.</translation>
+    </message>
+    <message>
+        <source>The kit has optional pieces (%1) not used in this plan; allowing them may reach the missed band.</source>
+        <translation>Vektsettet har valgfrie lodd (%1) som ikke er brukt i denne planen; tillater du dem, kan båndet som ble bommet på kanskje nås.</translation>
+    </message>
+    <message>
+        <source>The estimate's own uncertainty (pitch %1, roll %2) is wider than a tolerance band; the next mission will tell.</source>
+        <translation>Estimatets egen usikkerhet (stamp %1, rull %2) er bredere enn et toleransebånd; neste oppdrag vil vise det.</translation>
+    </message>
+    <message>
+        <source>Classic table (thesis App. E): %1, pitch error %2, roll error %3; it moves one %4 piece per point and mission, whatever the size of the error.</source>
+        <translation>Klassisk tabell (oppgavens vedlegg E): %1, stampavvik %2, rullavvik %3; den flytter ett lodd på %4 per punkt og oppdrag, uansett hvor stort avviket er.</translation>
+    </message>
+    <message>
+        <source>The classic table asks to remove a piece where none is installed, so it changes nothing.</source>
+        <translation>Den klassiske tabellen ber om å fjerne et lodd der ingen er montert, så den endrer ingenting.</translation>
+    </message>
+    <message>
+        <source>The classic table uses the standard kit only.</source>
+        <translation>Den klassiske tabellen bruker bare standard vektsett.</translation>
+    </message>
+    <message>
+        <source>The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short legs at different speeds); it would bring the uncertainty to about %4 kg.</source>
+        <translation>Usikkerheten i netto oppdrift (%1 kg) er for stor for båndet på %2 kg: legg kalibreringsmanøveren til neste oppdrag (%3 korte etapper i ulike hastigheter); den ville bringe usikkerheten ned til omtrent %4 kg.</translation>
+    </message>
+    <message>
+        <source>Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).</source>
+        <translation>Rull er planlagt og forutsagt i marsjfart (%1 o/min, propellmoment inkludert): sidebalansen som holder fartøyet på rett kjøl der, slik oppgaven bedømmer rull (§5.3.3).</translation>
+    </message>
+    <message>
+        <source>bringing the CG back towards the CB fore-aft</source>
+        <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret forut-akter</translation>
+    </message>
+    <message>
+        <source>balanced by the other points' fore-aft shares</source>
+        <translation>balansert av de andre punktenes andeler forut-akter</translation>
+    </message>
+    <message>
+        <source>bringing the CG back towards the CB sideways</source>
+        <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret sideveis</translation>
+    </message>
+    <message>
+        <source>balanced by the other points' sideways shares</source>
+        <translation>balansert av de andre punktenes andeler sideveis</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> og </translation>
+    </message>
+    <message>
+        <source>remove %1, then add %2</source>
+        <translation>fjern %1, legg så til %2</translation>
+    </message>
+    <message>
+        <source>remove %1</source>
+        <translation>fjern %1</translation>
+    </message>
+    <message>
+        <source>add %1</source>
+        <translation>legg til %1</translation>
+    </message>
+    <message>
+        <source>%1 mm forward</source>
+        <translation>%1 mm forover</translation>
+    </message>
+    <message>
+        <source>%1 mm aft</source>
+        <translation>%1 mm akterover</translation>
+    </message>
+    <message>
+        <source>%1 mm to starboard</source>
+        <translation>%1 mm mot styrbord</translation>
+    </message>
+    <message>
+        <source>%1 mm to port</source>
+        <translation>%1 mm mot babord</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3), which lowers the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
+        <translation>%1: %2 (%3), som senker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3), which raises the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
+        <translation>%1: %2 (%3), som øker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
+    </message>
+    <message>
+        <source>The vehicle stays %1 heavy even with every removable piece out: it needs added buoyancy or a lighter payload.</source>
+        <translation>Fartøyet er fortsatt %1 for tungt selv med alle lodd som kan tas ut, ute: det trenger mer oppdrift eller lettere nyttelast.</translation>
+    </message>
+    <message>
+        <source>The search stopped at its limit: this is the best change found, not a proved optimum.</source>
+        <translation>Søket stoppet ved grensen sin: dette er den beste endringen som ble funnet, ikke et bevist optimum.</translation>
+    </message>
+    <message>
+        <source>The CG is not below the CB after the change: the vehicle would capsize. Check BG and the payload.</source>
+        <translation>Tyngdepunktet er ikke under oppdriftssenteret etter endringen: fartøyet ville kantre. Kontroller BG og nyttelasten.</translation>
+    </message>
+    <message>
+        <source>The thesis mapping leaves the vehicle %1 heavy.</source>
+        <translation>Oppgavens fordeling gjør fartøyet %1 for tungt.</translation>
+    </message>
+    <message>
+        <source>The net buoyancy band %1 to %2 cannot be reached with this kit; best %3</source>
+        <translation>Båndet for netto oppdrift %1 til %2 kan ikke nås med dette vektsettet; beste er %3</translation>
+    </message>
+    <message>
+        <source>The pitch band ±%1 cannot be reached with this kit (at rest); best %2</source>
+        <translation>Stampbåndet ±%1 kan ikke nås med dette vektsettet (i ro); beste er %2</translation>
+    </message>
+    <message>
+        <source>The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2</source>
+        <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet mens stampen holdes i båndet; beste er %2</translation>
+    </message>
+    <message>
+        <source>The roll band ±%1 cannot be reached with this kit; best %2</source>
+        <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet; beste er %2</translation>
+    </message>
+    <message>
+        <source>; flying level at %1 m/s it pitches %2°, inside the band</source>
+        <translation>; i planflyging ved %1 m/s stamper det %2°, innenfor båndet</translation>
+    </message>
+    <message>
+        <source>; flying level at %1 m/s it pitches %2°, outside the band</source>
+        <translation>; i planflyging ved %1 m/s stamper det %2°, utenfor båndet</translation>
+    </message>
+    <message>
+        <source>; out of reach whatever the piece sizes: the points' capacities, the installed pieces and the higher priorities limit it</source>
+        <translation>; utenfor rekkevidde uansett loddstørrelser: punktenes kapasitet, loddene som er montert og de høyere prioritetene begrenser det</translation>
+    </message>
+    <message>
+        <source>; a %1 piece would reach it</source>
+        <translation>; et lodd på %1 ville nådd det</translation>
+    </message>
+    <message>
+        <source>; no single extra piece size tried (%1) would reach it</source>
+        <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det</translation>
+    </message>
+    <message>
+        <source>; no single extra piece size tried (%1) would reach it (some were not searched to the end)</source>
+        <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det (noen ble ikke søkt helt ut)</translation>
+    </message>
+</context>
+<context>
+    <name>AdviceWord</name>
+    <message>
+        <source>operating</source>
+        <translation>operasjonsdybden</translation>
+    </message>
+    <message>
+        <source>deepest</source>
+        <translation>største dybde</translation>
+    </message>
+    <message>
+        <source>surface</source>
+        <translation>overflaten</translation>
+    </message>
+    <message>
+        <source>transit</source>
+        <translation>transitt</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ingen</translation>
+    </message>
+</context>
+<context>
+    <name>auv::ui::AnalysisSummary</name>
+    <message>
+        <source>n/a</source>
+        <translation>i.t.</translation>
+    </message>
+    <message>
+        <source>not identifiable</source>
+        <translation>kan ikke bestemmes</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;No analysis&lt;/b&gt;: %1</source>
+        <translation>&lt;b&gt;Ingen analyse&lt;/b&gt;: %1</translation>
+    </message>
+    <message>
+        <source> kg</source>
+        <translation> kg</translation>
+    </message>
+    <message>
+        <source>Net buoyancy: &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>Netto oppdrift: &lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>(too light, 1 σ)</source>
+        <translation>(for lett, 1 σ)</translation>
+    </message>
+    <message>
+        <source>(too heavy, 1 σ)</source>
+        <translation>(for tung, 1 σ)</translation>
+    </message>
+    <message>
+        <source>(neutral, 1 σ)</source>
+        <translation>(nøytral, 1 σ)</translation>
+    </message>
+    <message>
+        <source>; add %1 for neutral at %2 kg/m³</source>
+        <translation>; legg til %1 for nøytral ved %2 kg/m³</translation>
+    </message>
+    <message>
+        <source> g</source>
+        <translation> g</translation>
+    </message>
+    <message>
+        <source>CG − CB: &lt;b&gt;not identifiable&lt;/b&gt; (see the notes)</source>
+        <translation>G − B: &lt;b&gt;kan ikke bestemmes&lt;/b&gt; (se merknadene)</translation>
+    </message>
+    <message>
+        <source>CG − CB: x &lt;b&gt;%1&lt;/b&gt;, y &lt;b&gt;%2&lt;/b&gt;</source>
+        <translation>G − B: x &lt;b&gt;%1&lt;/b&gt;, y &lt;b&gt;%2&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Errors (95 %): depth %1 · pitch %2 · roll %3</source>
+        <translation>Avvik (95 %): dybde %1 · stamp %2 · rull %3</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>Water at %1: %2 · %3 · %4 (95 %)</source>
+        <translation>Vann på %1: %2 · %3 · %4 (95 %)</translation>
+    </message>
+    <message>
+        <source> °C</source>
+        <translation> °C</translation>
+    </message>
+    <message>
+        <source> PSU</source>
+        <translation> PSU</translation>
+    </message>
+    <message>
+        <source> kg/m³</source>
+        <translation> kg/m³</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: %2</translation>
+    </message>
+    <message>
+        <source>Pitch error: %1</source>
+        <translation>Stampavvik: %1</translation>
+    </message>
+    <message>
+        <source>Net buoyancy</source>
+        <translation>Netto oppdrift</translation>
+    </message>
+    <message>
+        <source>CG x</source>
+        <translation>Tyngdepunkt x</translation>
+    </message>
+    <message>
+        <source>CG y</source>
+        <translation>Tyngdepunkt y</translation>
+    </message>
+</context>
+<context>
+    <name>ModelWords</name>
+    <message>
+        <source>hull compressibility</source>
+        <translation>skrogets kompressibilitet</translation>
+    </message>
+    <message>
+        <source>hull thermal expansion</source>
+        <translation>skrogets varmeutvidelse</translation>
+    </message>
+    <message>
+        <source>propeller torque</source>
+        <translation>propellmoment</translation>
+    </message>
+    <message>
+        <source>mass drift</source>
+        <translation>massedrift</translation>
+    </message>
+    <message>
+        <source>pitch sensor bias</source>
+        <translation>skjevhet i stampsensoren</translation>
+    </message>
+    <message>
+        <source>roll sensor bias</source>
+        <translation>skjevhet i rullsensoren</translation>
+    </message>
+    <message>
+        <source>depth sensor offset</source>
+        <translation>nullpunktsfeil i dybdesensoren</translation>
+    </message>
+    <message>
+        <source>quadratic pitch damping</source>
+        <translation>kvadratisk stampdemping</translation>
+    </message>
+    <message>
+        <source>vertical current</source>
+        <translation>vertikal strøm</translation>
+    </message>
+    <message>
+        <source>vertical velocity</source>
+        <translation>vertikal hastighet</translation>
+    </message>
+    <message>
+        <source>vertical force</source>
+        <translation>vertikal kraft</translation>
+    </message>
+    <message>
+        <source>pitch moment</source>
+        <translation>stampmoment</translation>
+    </message>
+    <message>
+        <source>roll moment</source>
+        <translation>rullmoment</translation>
+    </message>
+    <message>
+        <source>depth</source>
+        <translation>dybde</translation>
+    </message>
+    <message>
+        <source>pitch</source>
+        <translation>stamp</translation>
+    </message>
+    <message>
+        <source>roll</source>
+        <translation>rull</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>fart</translation>
+    </message>
+    <message>
+        <source>surge force</source>
+        <translation>kraft i lengderetningen</translation>
+    </message>
+</context>
 </TS>

@@ -79,7 +79,20 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   auto* export_row = new QHBoxLayout;
   export_row->addWidget(export_pdf_);
   export_row->addWidget(export_status_, 1);
-  auto* lay = new QVBoxLayout(this);
+  // Everything in a scroll area: with the glider's steps and the installed
+  // masses the page is taller than a 1366 x 768 screen leaves for it.
+  auto* content = new QWidget;
+  content->setObjectName("result_content");
+  auto* page_scroll = new QScrollArea;
+  page_scroll->setObjectName("result_scroll");
+  page_scroll->setWidgetResizable(true);
+  page_scroll->setFrameShape(QFrame::NoFrame);
+  page_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  page_scroll->setWidget(content);
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(0, 0, 0, 0);
+  outer->addWidget(page_scroll);
+  auto* lay = new QVBoxLayout(content);
   lay->addWidget(before_);
   lay->addWidget(table_);
   // The map and the notes share the height: for a glider the notes carry

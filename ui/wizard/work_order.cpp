@@ -1,5 +1,7 @@
 #include "wizard/work_order.h"
 
+#include "wizard/advice_text.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QFont>
@@ -185,7 +187,7 @@ WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint 
              << (r.safe ? WorkOrder::tr("Safe: at least %1 kg light (1.645 σ) at every planned depth.")
                         : WorkOrder::tr("NOT SAFE: less than %1 kg light (1.645 σ) at a planned depth."))
                     .arg(fixed(p.margin_kg, nd));
-  for (const auto& x : p.warnings) w.warnings << q(x);
+  for (const auto& x : p.warnings) w.warnings << adviceText(x);
   w.signature = WorkOrder::tr("Done by: ______________________   Signature: ______________________   Date: ____________");
   return w;
 }
