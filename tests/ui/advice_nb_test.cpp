@@ -150,7 +150,7 @@ TEST_F(AdviceNorwegian, AnalysisAndAdjustmentPagesHaveNoEnglishAdvice) {
       for (const auto* e : {&r.net_buoyancy_kg, &r.cg_x_mm, &r.cg_y_mm})
         if (!e->known && !e->why_not.empty()) msgs.push_back(e->why_not);
       if (!r.pitch_error_basis.empty()) msgs.push_back(r.pitch_error_basis);
-      const QString notes = find<QLabel>(wiz, "analysis_notes")->text();
+      const QString notes = find<QLabel>(*wiz.currentPage(), "analysis_notes")->text();
       EXPECT_GE(checkNoEnglish(notes, msgs, "analysis notes"), 3) << notes.toStdString();
       // Norwegian words a reader sees (the demo: CG y needs BG, the calibration notes).
       EXPECT_NE(notes.indexOf("Kan ikke bestemmes fra denne loggen"), -1) << notes.toStdString();
@@ -162,7 +162,7 @@ TEST_F(AdviceNorwegian, AnalysisAndAdjustmentPagesHaveNoEnglishAdvice) {
       const auto& p = *wiz.state().plan;
       std::vector<Message> msgs = p.warnings;
       msgs.insert(msgs.end(), p.explanations.begin(), p.explanations.end());
-      const QString shown = find<QLabel>(wiz, "messages")->text();
+      const QString shown = find<QLabel>(*wiz.currentPage(), "messages")->text();
       EXPECT_GE(checkNoEnglish(shown, msgs, "adjustment"), 1) << shown.toStdString();
       EXPECT_EQ(shown.indexOf("which lowers"), -1);
       EXPECT_EQ(shown.indexOf("which raises"), -1);

@@ -27,18 +27,20 @@ void checkPage(OperatorWizard& wiz, const std::string& where) {
     EXPECT_TRUE(bad.isEmpty()) << where << ", " << t.where.toStdString() << ": " << bad.join(", ").toStdString()
                                << " in \"" << t.text.left(300).toStdString() << "\"";
   }
-  EXPECT_EQ(auv::testing::duplicateMnemonics(wiz), QStringList()) << where;
+  EXPECT_EQ(auv::testing::duplicateMnemonics(wiz).join(", ").toStdString(), "") << where;
   const bool last = wiz.nextId() == -1;
   auto* forward = qobject_cast<QPushButton*>(wiz.button(last ? QWizard::FinishButton : QWizard::NextButton));
   ASSERT_NE(forward, nullptr);
   EXPECT_TRUE(forward->isDefault()) << where << ": " << (last ? "Finish" : "Next") << " is not the default button";
   // A focused auto-default button would take Enter instead of Next.
-  for (QPushButton* b : wiz.currentPage()->findChildren<QPushButton*>())
-    if (b->isVisibleTo(wiz.currentPage()))
-      EXPECT_FALSE(b->autoDefault()) << where << ": Enter on '" << b->text().toStdString() << "' presses it, not Next";
-  if (auv::testing::lastPageWidgetByTab(wiz))
+  for (QPushButton* b : wiz.currentPage()->findChildren<QPushButton*>()) {
+    if (!b->isVisibleTo(wiz.currentPage())) continue;
+    EXPECT_FALSE(b->autoDefault()) << where << ": Enter on '" << b->text().toStdString() << "' presses it, not Next";
+  }
+  if (auv::testing::lastPageWidgetByTab(wiz)) {
     EXPECT_EQ(auv::testing::widgetAfterPageByTab(wiz), forward) << where << ": Tab from the last field must land on "
                                                                 << (last ? "Finish" : "Next");
+  }
   const QSize min = wiz.minimumSizeHint().expandedTo(wiz.minimumSize());
   EXPECT_LE(min.width(), kScreenW) << where << ": needs " << min.width() << " px wide";
   EXPECT_LE(min.height(), kScreenH) << where << ": needs " << min.height() << " px high";
@@ -74,25 +76,30 @@ TEST_P(EveryPage, WordsKeyboardAndScreenSize) {
     const std::string where = seq.name + ", page " + std::to_string(wiz.currentId()) + " '" +
                               wiz.currentPage()->title().toStdString() + "'";
     checkPage(wiz, where);
+    if (wiz.currentId() == seq.last_page) break;
     const int expected = wiz.nextId();
     ASSERT_TRUE(wiz.currentPage()->isComplete()) << where << ": the demo cannot go on ("
                                                  << wiz.state().last_error << ")";
     pressEnterOnLastField(wiz);
     if (expected == -1) {
-      EXPECT_EQ(wiz.result(), QDialog::Accepted) << where << ": Enter on the last page must finish";
+      QString said;
+      for (QLabel* l : wiz.currentPage()->findChildren<QLabel*>())
+        if (l->objectName().contains("status") || l->objectName().contains("error")) said += " " + l->text();
+      EXPECT_EQ(wiz.result(), QDialog::Accepted) << where << ": Enter on the last page must finish;" << said.toStdString();
       break;
     }
     ASSERT_EQ(wiz.currentId(), expected) << where << ": Enter from the last field must go to the next page ("
                                          << wiz.state().last_error << ")";
   }
-  EXPECT_GE(pages, 3) << seq.name;
+  EXPECT_GE(pages, seq.last_page == -1 ? 3 : 1) << seq.name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Sequences, EveryPage,
                          ::testing::Range<std::size_t>(0, auv::testing::everyWizardSequence().size()),
                          [](const ::testing::TestParamInfo<std::size_t>& i) {
+                           const std::string name = auv::testing::everyWizardSequence()[i.param].name;
                            std::string n;
-                           for (char c : auv::testing::everyWizardSequence()[i.param].name) {
+                           for (char c : name) {
                              if (c == '(') break;
                              if (std::isalnum(static_cast<unsigned char>(c))) n += c;
                            }

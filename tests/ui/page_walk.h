@@ -35,6 +35,8 @@ struct WizardSequence {
   std::string name;
   std::function<ui::WizardState(const QString& scratch_dir)> session;
   std::function<void(const QString& history_file)> seed_history;
+  // The page the walk ends on (checked, not left), -1: through Finish.
+  int last_page = -1;
 };
 
 // HUGIN, Delphin2, Slocum and Seaglider first missions; HUGIN, Slocum and

@@ -238,7 +238,7 @@ void ModelCheckPage::showResult() {
   }
   status_->setStyleSheet(QString());
   const auto& r = *outcome_.result;
-  status_->setText(tr("Model: %1.").arg(q(outcome_.description)));
+  status_->setText(tr("Model: %1.").arg(readableModelText(outcome_.description)));
   QString s = tr("%1 samples in %2 dives/legs. Net buoyancy with the accepted terms <b>%3 ± %4 kg</b> "
                  "(ballast state alone: %5 kg)")
                   .arg(r.samples)
@@ -385,7 +385,7 @@ void ModelCheckPage::showWhere() {
   const auto& r = *outcome_.result;
   QStringList lines;
   for (const auto& m : r.missing_physics)
-    if (!m.where.empty()) lines << tr("<b>%1</b> acts where: %2").arg(termLabel(m.id), q(m.where).toHtmlEscaped());
+    if (!m.where.empty()) lines << tr("<b>%1</b> acts where: %2").arg(termLabel(m.id), readableModelText(m.where).toHtmlEscaped());
   lines << tr("<b>Where the ballast-only model misses</b>:");
   // The shown channel's simulation error first, then the rest.
   const int shown = shownChannel();
@@ -398,10 +398,10 @@ void ModelCheckPage::showWhere() {
     });
   }
   for (const auto* l : loc)
-    lines << tr("%1, %2: %3").arg(q(l->source), channelLabel(l->channel), q(l->summary).toHtmlEscaped());
-  for (const auto& i : r.identifiability) lines << tr("Cannot be told apart: %1").arg(q(i.message).toHtmlEscaped());
-  for (const auto& w : r.warnings) lines << QStringLiteral("⚠ %1").arg(q(w).toHtmlEscaped());
-  for (const auto& n : r.notes) lines << QStringLiteral("<span style='color:#555'>%1</span>").arg(q(n).toHtmlEscaped());
+    lines << tr("%1, %2: %3").arg(q(l->source), channelLabel(l->channel), readableModelText(l->summary).toHtmlEscaped());
+  for (const auto& i : r.identifiability) lines << tr("Cannot be told apart: %1").arg(readableModelText(i.message).toHtmlEscaped());
+  for (const auto& w : r.warnings) lines << QStringLiteral("⚠ %1").arg(readableModelText(w).toHtmlEscaped());
+  for (const auto& n : r.notes) lines << QStringLiteral("<span style='color:#555'>%1</span>").arg(readableModelText(n).toHtmlEscaped());
   where_->setText(lines.join("<br>"));
 }
 

@@ -11,7 +11,6 @@
 namespace auv::ui {
 namespace {
 
-QString q(const std::string& s) { return QString::fromStdString(s); }
 
 QLabel* resultLabel(const char* name) {
   auto* l = new QLabel;

@@ -1,6 +1,7 @@
 #include "wizard/model_words.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 
 namespace auv::ui {
 namespace {
@@ -46,6 +47,23 @@ QString channelLabel(discrepancy::Channel c) {
     case Channel::kSurgeForce: return tr(QT_TRANSLATE_NOOP("ModelWords", "surge force"));
   }
   return QString::fromLatin1(discrepancy::channelName(c)).replace('_', ' ');
+}
+
+QString readableModelText(const std::string& core_text) {
+  QString s = QString::fromStdString(core_text);
+  for (const Name& n : kTerms) s.replace(QString::fromLatin1(n.id), tr(n.label));
+  using discrepancy::Channel;
+  for (Channel c : {Channel::kVerticalVelocity, Channel::kVerticalForce, Channel::kPitchMoment, Channel::kRollMoment,
+                    Channel::kSurgeForce})
+    s.replace(QString::fromLatin1(discrepancy::channelName(c)), channelLabel(c));
+  s.replace("ballast_state", tr(QT_TRANSLATE_NOOP("ModelWords", "ballast state")));
+  s.replace("core/sim", tr(QT_TRANSLATE_NOOP("ModelWords", "the simulator")));
+  // Any other id or profile key left in core's English: its words.
+  static const QRegularExpression id(R"(\b([A-Za-z0-9]+)_(?=[A-Za-z0-9]))");
+  for (int i = 0; i < 8 && s.contains(id); ++i) s.replace(id, "\\1 ");
+  static const QRegularExpression range(R"((\d)--(\d))");
+  s.replace(range, "\\1 " + tr(QT_TRANSLATE_NOOP("ModelWords", "to")) + " -\\2");
+  return s;
 }
 
 }  // namespace auv::ui

@@ -11,5 +11,9 @@ namespace auv::ui {
 
 QString termLabel(const std::string& id);  // unknown ids: '_' read as spaces
 QString channelLabel(discrepancy::Channel c);
+// A model-check sentence from core (English, no message id yet) with its ids
+// in words: term and channel ids, "ballast_state", "core/sim", and number
+// ranges written "a--b".
+QString readableModelText(const std::string& core_text);
 
 }  // namespace auv::ui
