@@ -180,7 +180,7 @@ TEST_F(PostMission, HuginSurveyAnalysisShadingCrosshairAndExport) {
   EXPECT_EQ(wiz->state().analysis->details["installed_kg"].get<std::vector<double>>(), installed);
   // CG y is not identifiable without a roll test: said in words.
   EXPECT_FALSE(r.cg_y_mm.known);
-  EXPECT_NE(find<QLabel>(*wiz, "analysis_notes")->text().indexOf("not identifiable"), -1);
+  EXPECT_NE(find<QLabel>(*wiz, "analysis_notes")->text().indexOf("Not identifiable"), -1);
 
   // Operating segments: one shaded band per steady leg on every chart, one table row each.
   const std::size_t used = usedSegments(r);

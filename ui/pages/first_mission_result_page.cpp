@@ -21,6 +21,7 @@
 #include "firstmission/hugin_first_mission.h"
 #include "firstmission/slocum_first_mission.h"
 #include "history/store.h"
+#include "widgets/fit_scroll_area.h"
 #include "widgets/inputs.h"
 #include "widgets/weight_map_widget.h"
 #include "wizard/history_save.h"
@@ -83,11 +84,8 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   // masses the page is taller than a 1366 x 768 screen leaves for it.
   auto* content = new QWidget;
   content->setObjectName("result_content");
-  auto* page_scroll = new QScrollArea;
+  auto* page_scroll = new FitScrollArea;
   page_scroll->setObjectName("result_scroll");
-  page_scroll->setWidgetResizable(true);
-  page_scroll->setFrameShape(QFrame::NoFrame);
-  page_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   page_scroll->setWidget(content);
   auto* outer = new QVBoxLayout(this);
   outer->setContentsMargins(0, 0, 0, 0);
