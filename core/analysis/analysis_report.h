@@ -13,6 +13,7 @@
 
 #include "analysis/auv_trim_estimation.h"
 #include "analysis/calibration_parameter.h"
+#include "common/message.h"
 #include "analysis/segments.h"
 #include "analysis/statistics.h"
 
@@ -22,7 +23,7 @@ struct EstimatedValue {
   bool known = false;
   double value = std::numeric_limits<double>::quiet_NaN();
   double sigma = std::numeric_limits<double>::quiet_NaN();
-  std::string why_not;  // "not identifiable from this log because ..." when !known
+  Message why_not;  // "not identifiable from this log because ..." when !known
 };
 
 struct SegmentReport {
@@ -74,7 +75,7 @@ struct AnalysisReport {
   // measured - commanded (or pitch at steady depth without a command), roll
   // at cruise (starboard down positive).
   MeanEstimate depth_error_m, pitch_error_deg, pitch_at_steady_depth_deg, roll_deg;
-  std::string pitch_error_basis;
+  Message pitch_error_basis;
   // Water at operating depth (in situ).
   MeanEstimate temperature_degC, salinity_psu, density_kgm3, pressure_dbar, depth_m;
   std::string salinity_source, density_source;
@@ -87,8 +88,9 @@ struct AnalysisReport {
   std::vector<SteadySegmentMeans> steady_segments;
 
   std::vector<SegmentReport> segments;  // phases, then operating windows, in time order
-  std::vector<std::string> warnings;
-  std::vector<std::string> notes;
+  // Advice with message ids (common/message.h): the English is what the CLI prints.
+  std::vector<Message> warnings;
+  std::vector<Message> notes;
   nlohmann::json details = nlohmann::json::object();  // model-specific extras (fit, classic mode)
 };
 

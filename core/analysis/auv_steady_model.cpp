@@ -1,5 +1,7 @@
 #include "analysis/auv_steady_model.h"
 
+#include "analysis/analysis_messages.h"
+
 #include <cmath>
 
 #include "vehicle/json_reader.h"
@@ -50,7 +52,7 @@ std::optional<SteadyHydroCoefficients> steadyHydroFromProfile(const VehicleProfi
     c.Z_e_per_deg = s * Z;
     c.M_e_per_deg = s * M;
     c.has_planes = true;
-    if (s < 0) c.note = "plane derivatives converted from trailing-edge-up-positive to the log's trailing-edge-down-positive elevator";
+    if (s < 0) c.note = Message(msg::kPlaneSignConverted);
   };
   if (h.has("Z_uud_kg_per_m_deg")) {
     readPlanes(h);

@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include "common/message.h"
 #include "vehicle/vehicle_profile.h"
 
 namespace auv::analysis {
@@ -33,7 +34,7 @@ struct SteadyHydroCoefficients {
   bool has_planes = false;
   double Z_e_per_deg = 0.0;  // N per (m/s)^2 per degree, interchange sign
   double M_e_per_deg = 0.0;  // N m per (m/s)^2 per degree, interchange sign
-  std::string note;          // e.g. the sign conversion applied
+  Message note;              // e.g. the sign conversion applied
 };
 
 // From the profile's "hydrodynamics" section (and "actuators.stern_planes" or

@@ -1,5 +1,7 @@
 #include "analysis/auv_trim_estimation.h"
 
+#include "analysis/analysis_messages.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
@@ -91,7 +93,7 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
   for (const auto& g : segs)
     if (g.roll_deg.valid()) s.push_back(&g);
   if (s.empty()) {
-    out.y_why = std::string(kNotId) + "no steady segment has roll samples";
+    out.y_why = Message(msg::kNoRollSamples);
     return;
   }
   const double d2r = units::degToRad(1.0);
@@ -191,7 +193,7 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     out.cruise_roll_sigma_deg = out.roll_static_sigma_deg;
     if (!ctx.log_has_rpm) {
       out.y_basis = "static_assumed";
-      out.warnings.push_back("the log has no prop_rpm channel: CG y assumes the roll at cruise is static; any propeller reaction torque is included in it");
+      out.warnings.push_back(Message(msg::kNoPropRpm));
     } else if (all_stopped) {
       out.y_basis = "static";
     } else {
@@ -206,17 +208,12 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
         }
       }
       out.y_basis = "cruise_equivalent";
-      out.warnings.push_back(
-          "all steady segments run the propeller at about the same speed, so its reaction torque cannot be separated "
-          "from a CG offset: cg_offset_mm.y is the offset that levels the vehicle at this cruise rpm, not the static CG");
+      out.warnings.push_back(Message(msg::kOneCruiseRpm));
     }
   }
   out.roll_static_known = true;
   if (!ctx.bg_measured_m) {
-    out.y_why = std::string(kNotId) +
-                "a steady roll gives y = BG tan(roll) and BG (the CG height below the CB) cannot be measured from the "
-                "log: give --bg-mm from an inclining or roll test (static roll " +
-                fmt("%+.2f", out.roll_static_deg) + " deg)";
+    out.y_why = Message(msg::kCgYNeedsBg, {fmt("%+.2f", out.roll_static_deg)});
     return;
   }
   const double bg = *ctx.bg_measured_m;
@@ -288,19 +285,17 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
   AuvTrimEstimate out;
   estimateRoll(segments, ctx, out);
 
-  auto notIdentifiable = [&](const std::string& why) {
-    out.buoyancy_why = out.x_why = std::string(kNotId) + why;
-  };
+  auto notIdentifiable = [&](const Message& why) { out.buoyancy_why = out.x_why = why; };
   if (segments.empty()) {
-    notIdentifiable("no steady level-flight segment long enough was found");
+    notIdentifiable(Message(msg::kNoSteadyLevelSegment));
     return out;
   }
   if (!coeffs) {
-    notIdentifiable(no_coefficients_reason);
+    notIdentifiable(Message(std::string(kNotId) + no_coefficients_reason));
     return out;
   }
   if (!ctx.log_has_speed) {
-    notIdentifiable("the log has no speed channel (the lift and moment that balance them scale with speed squared)");
+    notIdentifiable(Message(msg::kNoSpeed));
     return out;
   }
   const bool use_elevator = coeffs->has_planes && ctx.log_has_elevator;
@@ -316,7 +311,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
   out.segment_net_buoyancy_kg.assign(segments.size(), kNaN);
   out.segment_x_m.assign(segments.size(), kNaN);
   if (meas.empty()) {
-    notIdentifiable("no steady segment has both speed and pitch samples");
+    notIdentifiable(Message(msg::kNoSpeedAndPitch));
     return out;
   }
   out.segments_used = meas.size();
@@ -355,10 +350,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     out.plane_lever_m = l;
     out.moment_combination_nm = swq / sw;
     out.moment_combination_sigma_nm = std::max(std::sqrt(1.0 / sw), meas.size() >= 3 ? acc.result().sd / std::sqrt(static_cast<double>(meas.size())) : 0.0);
-    notIdentifiable(
-        "the log has no elevator channel: with the plane angle unknown, each steady segment only fixes the moment "
-        "W x_G - l (B - W) about the planes' centre of pressure (l = " + fmt("%.3f", l) +
-        " m), at any speed; record the elevator (stern-plane) angle");
+    notIdentifiable(Message(msg::kNoElevator, {fmt("%.3f", l)}));
     return out;
   }
 
@@ -405,10 +397,9 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
   const SteadyCalibration cal = calibrateSteady(*coeffs, m.W, m.rho, cs, pri);
   out.history_segments_used = history_used;
   if (history_used > 0)
-    out.notes.push_back("calibrated with " + std::to_string(history_used) +
-                        " steady segments of earlier missions of this configuration and the known weight changes since");
+    out.notes.push_back(Message(msg::kHistoryCalibration, {std::to_string(history_used)}));
   if (!cal.ok) {
-    notIdentifiable("the steady segments do not determine the heave and pitch balance (degenerate geometry)");
+    notIdentifiable(Message(msg::kDegenerate));
     return out;
   }
   out.chi2_per_dof = cal.chi2_per_dof;
@@ -425,9 +416,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     out.elevator_bias_sigma_deg = cal.elevator_offset_sigma_deg;
     out.elevator_bias_fitted = out.elevator_bias_sigma_deg < 0.5 * pri.elevator_offset_sigma_deg;
     if (!out.elevator_bias_fitted)
-      out.notes.push_back(std::string("elevator zero offset assumed 0 +- ") + fmt("%.0f", pri.elevator_offset_sigma_deg) +
-                          " deg (its prior, in the sigmas): " + kNotId +
-                          "the steady segments do not span enough speeds to separate it from the net buoyancy");
+      out.notes.push_back(Message(msg::kElevatorOffsetPrior, {fmt("%.0f", pri.elevator_offset_sigma_deg)}));
   }
   for (const auto& q : cal.parameters) out.calibration.push_back(q);
   out.calibrated = calibratedCoefficients(*coeffs, m.rho, cal.p);
@@ -448,15 +437,12 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
   if (!m.c.note.empty()) out.notes.push_back(m.c.note);
   std::string ident, prior;
   for (const auto& q : cal.parameters) (q.identified ? ident : prior) += (q.identified ? ident : prior).empty() ? q.id : ", " + q.id;
-  out.notes.push_back("hydrodynamics calibrated jointly with the ballast state (" + fmt("%.1f", cal.data_parameters) +
-                      " parameters determined by the log); identified: " + (ident.empty() ? "none" : ident) +
-                      "; at their prior: " + (prior.empty() ? "none" : prior));
-  out.notes.push_back("sigmas are the calibration's posterior (prior " +
-                      fmt("%.0f", 100 * pri.group_rel_sigma) + " % per group of hydrodynamic derivatives" +
-                      (pri.munk_sigma >= 0.5 ? std::string(", Munk moment inside M_w or on top unknown") : std::string()) + ")");
+  out.notes.push_back(Message(msg::kJointCalibration,
+                              {fmt("%.1f", cal.data_parameters), ident.empty() ? "none" : ident, prior.empty() ? "none" : prior}));
+  out.notes.push_back(Message(pri.munk_sigma >= 0.5 ? msg::kPosteriorSigmasMunk : msg::kPosteriorSigmas,
+                              {fmt("%.0f", 100 * pri.group_rel_sigma)}));
   if (!ctx.bg_measured_m)
-    out.notes.push_back("BG from the profile (" + fmt("%.1f", units::mToMm(m.BG)) + " mm +- " +
-                        fmt("%.0f", 100 * ctx.bg_profile_rel_sigma) + " %) sets the scale of the pitch moments; --bg-mm from a roll test sharpens CG x");
+    out.notes.push_back(Message(msg::kBgFromProfile, {fmt("%.1f", units::mToMm(m.BG)), fmt("%.0f", 100 * ctx.bg_profile_rel_sigma)}));
   return out;
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/message.h"
 #include "analysis/auv_calibration.h"
 #include "analysis/auv_steady_model.h"
 #include "analysis/statistics.h"
@@ -64,7 +65,7 @@ struct AuvTrimContext {
 
 struct AuvTrimEstimate {
   bool buoyancy_identified = false, x_identified = false, y_identified = false;
-  std::string buoyancy_why, x_why, y_why;  // "not identifiable from this log because ..."
+  Message buoyancy_why, x_why, y_why;  // "not identifiable from this log because ..."
   double net_buoyancy_kg = 0.0, net_buoyancy_sigma_kg = 0.0;
   double x_m = 0.0, x_sigma_m = 0.0;
   double y_m = 0.0, y_sigma_m = 0.0;
@@ -101,7 +102,7 @@ struct AuvTrimEstimate {
     double net_sigma_kg = 0.0, x_sigma_m = 0.0;
   };
   std::optional<Manoeuvre> manoeuvre;
-  std::vector<std::string> notes, warnings;
+  std::vector<Message> notes, warnings;
 };
 
 AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, const SteadyHydroCoefficients* coeffs,

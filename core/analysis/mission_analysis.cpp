@@ -1,5 +1,7 @@
 #include "analysis/mission_analysis.h"
 
+#include "analysis/analysis_messages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -185,12 +187,10 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
   SegmentOptions so = o.segments;
   so.glider = glider;
   Segmentation seg = detectSegments(log, so);
-  for (const std::string& n : seg.notes) rep.notes.push_back(n);
+  for (const Message& n : seg.notes) rep.notes.push_back(n);
   const std::vector<Segment>& win = seg.operating;
   if (win.empty())
-    rep.warnings.push_back(glider ? "no steady dive or climb long enough was found: nothing to estimate from"
-                                  : "no steady level-flight segment of at least " + fmt("%.0f", so.min_steady_s) +
-                                        " s was found: errors and estimates are not available");
+    rep.warnings.push_back(glider ? Message(msg::kNoSteadyGlide) : Message(msg::kNoSteadyLevel, {fmt("%.0f", so.min_steady_s)}));
   const std::size_t nw = win.size();
   const TimeSeries depth = depthSeries(log, latitude);
 
@@ -237,13 +237,12 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
   rep.pitch_at_steady_depth_deg = glider ? MeanEstimate{} : pitch.all.result();
   if (hasPitchCmd) {
     rep.pitch_error_deg = pErr.all.result();
-    rep.pitch_error_basis = glider ? "measured - commanded, during glides whose command has the phase's sign"
-                                   : "measured - commanded, in steady level flight";
+    rep.pitch_error_basis = Message(glider ? msg::kPitchBasisGlide : msg::kPitchBasisLevel);
   } else if (!glider) {
     rep.pitch_error_deg = rep.pitch_at_steady_depth_deg;
-    rep.pitch_error_basis = "pitch at steady depth (the log has no pitch_cmd; level flight should be at 0 deg)";
+    rep.pitch_error_basis = Message(msg::kPitchBasisNoCommand);
   }
-  if (!hasDepthCmd && !glider) rep.warnings.push_back("the log has no depth_cmd channel: errors.depth_m is not available");
+  if (!hasDepthCmd && !glider) rep.warnings.push_back(Message(msg::kNoDepthCommand));
 
   // --- water at operating depth ------------------------------------------------
   std::vector<Segment> waterWin = win;
@@ -265,11 +264,10 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
   rep.salinity_source = water.salinity_source;
   rep.density_source = water.density_source;
   if (water.skipped > 0)
-    rep.warnings.push_back(std::to_string(water.skipped) + " CTD samples outside the EOS-80 range were not used for density");
+    rep.warnings.push_back(Message(msg::kCtdOutOfRange, {std::to_string(water.skipped)}));
   double rho = water.rho.valid() ? water.rho.mean : kNaN;
   if (!water.rho.valid()) {
-    rep.warnings.push_back("no in-situ density could be computed (no temperature/salinity or density channel): " +
-                           fmt("%.1f", o.default_density_kgm3) + " kg/m3 assumed");
+    rep.warnings.push_back(Message(msg::kNoDensity, {fmt("%.1f", o.default_density_kgm3)}));
     rho = o.default_density_kgm3;
   }
 
@@ -394,21 +392,19 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     if (!rep.steady_segments.empty()) d["steady_segments"] = steadySegmentsJson(rep.steady_segments);
     rep.details["auv_estimate"] = d;
   } else {
-    rep.cg_x_mm.why_not = "not identifiable from this log because a glider's pitch is set by its battery position, "
-                          "not by a fixed CG (use the tank or pitch-trim procedure)";
-    rep.cg_y_mm.why_not = "not identifiable from this log because the glider's roll is set by its roll mass (use the tank procedure)";
-    std::vector<std::string> cnotes;
+    rep.cg_x_mm.why_not = Message(msg::kGliderCgX);
+    rep.cg_y_mm.why_not = Message(msg::kGliderCgY);
+    std::vector<Message> cnotes;
     const GliderFlightConstants c = gliderConstantsFromProfile(v, cnotes);
     for (const auto& n : cnotes) rep.notes.push_back(n);
-    std::string why;
-    if (!hasSamples(log, "pump_volume", 10)) why = "the log has no pump_volume channel (the buoyancy engine's volume)";
-    else if (!hasSamples(log, "pitch", 10)) why = "the log has no pitch channel";
-    else if (win.empty()) why = "no steady dive or climb was found";
+    Message why;
+    if (!hasSamples(log, "pump_volume", 10)) why = Message(msg::kNoPumpVolume);
+    else if (!hasSamples(log, "pitch", 10)) why = Message(msg::kNoPitch);
+    else if (win.empty()) why = Message(msg::kNoSteadyDiveOrClimb);
     if (const std::string* m = log.metadataValue("mass_kg")) {
       const double lm = parseNumberAfter(*m, 0);
       if (lm > 0 && std::abs(lm - v.mass_kg) > 0.05 * v.mass_kg)
-        rep.warnings.push_back("the log says mass_kg " + fmt("%.2f", lm) + " but the profile has " + fmt("%.2f", v.mass_kg) +
-                               " kg: the fit uses the profile mass (it matters only through density changes)");
+        rep.warnings.push_back(Message(msg::kLogMassDiffers, {fmt("%.2f", lm), fmt("%.2f", v.mass_kg)}));
     }
     GliderFitResult fit;
     ReferenceState ref;
@@ -479,14 +475,14 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
         pitchBiasSigma = std::abs(b.net_buoyancy_kg - fit.net_buoyancy_kg);
         fit.net_buoyancy_sigma_kg = std::hypot(fit.net_buoyancy_sigma_kg, pitchBiasSigma);
       }
-      if (fit.samples < 10) why = "fewer than 10 steady-glide samples deeper than " + fmt("%.0f", o.glider_min_depth_m) +
-                                  " m with |pitch| >= " + fmt("%.0f", o.glider_min_pitch_deg) + " deg";
+      if (fit.samples < 10)
+        why = Message(msg::kFewGlideSamples, {fmt("%.0f", o.glider_min_depth_m), fmt("%.0f", o.glider_min_pitch_deg)});
     }
     if (!why.empty()) {
-      rep.net_buoyancy_kg.why_not = "not identifiable from this log because " + why;
+      rep.net_buoyancy_kg.why_not = why;
       rep.mass_to_add_g.why_not = rep.net_buoyancy_kg.why_not;
     } else {
-      if (!fit.converged) rep.warnings.push_back("glider flight-model fit: " + fit.message);
+      if (!fit.converged) rep.warnings.push_back(Message(msg::kGliderFitNotConverged, {fit.message}));
       rep.net_buoyancy_kg = {true, fit.net_buoyancy_kg, fit.net_buoyancy_sigma_kg, ""};
       GliderTargetRequest tq = o.glider_target;
       if (!tq.density_kgm3) tq.density_kgm3 = o.target_density_kgm3;

@@ -1,5 +1,7 @@
 #include "analysis/profile_constants.h"
 
+#include "analysis/analysis_messages.h"
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -71,7 +73,7 @@ std::optional<double> latitudeFromMetadata(const MissionLog& log) {
   return std::nullopt;
 }
 
-GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::vector<std::string>& notes) {
+GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::vector<Message>& notes) {
   GliderFlightConstants c;
   c.mass_kg = v.mass_kg;
   c.thermal_expansion_per_degC = v.hull.thermal_expansion_per_degC;
@@ -100,12 +102,11 @@ GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::v
     }
     c.pitch_offset_rad = units::degToRad(f.numberIn("pitch_offset_deg", -45.0, 45.0, 0.0));
   } else {
-    notes.push_back("glider flight-model constants are gliderflight's Slocum defaults (S = 0.1 m2, lift slope 7.53 /rad, "
-                    "Cd1 = 10.5 /rad2): add a \"flight_model\" section to the profile for another glider");
+    notes.push_back(Message(msg::kGliderDefaultConstants));
   }
   if (!(c.compressibility_per_dbar > 0.0)) {
     c.compressibility_per_dbar = 5e-6;
-    notes.push_back("hull compressibility not in the profile: gliderflight's 5e-10 1/Pa (5e-6 1/dbar) is used");
+    notes.push_back(Message(msg::kGliderDefaultCompressibility));
   }
   return c;
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/message.h"
 #include "analysis/auv_trim_estimation.h"
 #include "analysis/glider_flight.h"
 #include "missionlog/mission_log.h"
@@ -16,7 +17,7 @@ namespace auv::analysis {
 
 // Flight-model constants for a glider profile: its optional "flight_model"
 // section, else gliderflight's Slocum defaults (listed in `notes`).
-GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::vector<std::string>& notes);
+GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::vector<Message>& notes);
 
 // The number at `pos` of a metadata text ("12.5 kg" -> 12.5), NaN if none.
 double parseNumberAfter(const std::string& s, std::size_t pos);

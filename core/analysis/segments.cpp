@@ -1,5 +1,7 @@
 #include "analysis/segments.h"
 
+#include "analysis/analysis_messages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -138,10 +140,10 @@ void addUnsteadyWindows(const MissionLog& log, const char* channel, bool command
   }
 }
 
-std::string fmtWindowNote(const char* what, std::size_t count, double seconds) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%s: %zu interval(s), %.0f s excluded from steady windows", what, count, seconds);
-  return buf;
+Message fmtWindowNote(const char* what, std::size_t count, double seconds) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f", seconds);
+  return Message(msg::kWindowExcluded, {what, std::to_string(count), buf});
 }
 
 }  // namespace

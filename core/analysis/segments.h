@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/message.h"
 #include "analysis/series_tools.h"
 #include "missionlog/mission_log.h"
 
@@ -57,7 +58,7 @@ struct Segmentation {
   std::vector<Segment> phases;     // surface/dive/climb/level, in time order
   std::vector<Segment> operating;  // kSteady or kGlide windows, in time order
   double max_depth_m = 0.0;
-  std::vector<std::string> notes;  // what was excluded and why
+  std::vector<Message> notes;  // what was excluded and why
 };
 
 // Needs a `depth` channel (or `pressure`, converted with the standard

@@ -1,6 +1,7 @@
 #pragma once
 // The solver's answer: the move (signed piece counts per point and size) and
 // what the vehicle will do after it, with plain sentences for the technician.
+#include "common/message.h"
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ struct BallastSolution {
   double pitch_deg = 0, roll_deg = 0;   // predicted static attitude (exact, hydrostatics/static_trim.h)
   bool buoyancy_in_band = false, pitch_in_band = false, roll_in_band = false;
   std::vector<std::string> notes;       // one sentence per point or decision
-  std::vector<std::string> warnings;    // unreachable bands, unsafe states
+  std::vector<Message> warnings;        // unreachable bands, unsafe states (ballast_messages.h)
 };
 
 }  // namespace auv

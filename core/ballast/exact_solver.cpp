@@ -5,6 +5,7 @@
 #include "ballast/ballast_solver.h"
 #include "ballast/extra_piece.h"
 #include "ballast/lexicographic_optimum.h"
+#include "ballast/ballast_messages.h"
 #include "ballast/solution_text.h"
 #include "common/units.h"
 
@@ -12,6 +13,25 @@ namespace auv {
 namespace {
 
 using namespace ballast;
+
+std::string suffix(const ExtraPieceAnswer& a);
+
+// What an extra piece would do, as the two message arguments (kind, size(s)).
+std::pair<std::string, std::string> extraArgs(const ExtraPieceAnswer& a) {
+  if (a.out_of_reach) return {"out_of_reach", ""};
+  if (a.size_kg) return {"piece", sizeText(*a.size_kg)};
+  if (a.tried_kg.empty()) return {"", ""};
+  std::string sizes;
+  for (double s : a.tried_kg) sizes += (sizes.empty() ? "" : ", ") + sizeText(s);
+  return {a.undecided ? "none_tried_undecided" : "none_tried", sizes};
+}
+
+// A band the kit cannot reach (ballast_messages.h): English as before, with its arguments.
+Message bandUnreachable(const std::string& english, const char* band, const std::string& lo, const std::string& hi,
+                        const std::string& best, const ExtraPieceAnswer& a, bool pitch_ok) {
+  const auto [kind, extra] = extraArgs(a);
+  return Message(msg::kBandUnreachableId, english + suffix(a), {band, lo, hi, best, kind, extra, pitch_ok ? "pitch_ok" : ""});
+}
 
 std::string suffix(const ExtraPieceAnswer& a) {
   if (a.out_of_reach) {
@@ -54,34 +74,38 @@ void explain(const BallastProblem& pr, const TrimModel& model, const TrimTargets
     if (opt.window.best.negative_kg > 1e-6) {
       // said below, for both policies
     } else if (opt.window.best.band_violation_kg > 1e-6) {
-      sol.warnings.push_back("net buoyancy band " + kgText(lo) + " to " + kgText(spec.net_buoyancy_max_kg) +
-                             " not reachable with this kit; best " + signedKgText(sol.net_buoyancy_kg) +
-                             suffix(extraPieceReaching(pr, model, targets, opt, Band::Buoyancy)));
+      sol.warnings.push_back(bandUnreachable("net buoyancy band " + kgText(lo) + " to " + kgText(spec.net_buoyancy_max_kg) +
+                                                 " not reachable with this kit; best " + signedKgText(sol.net_buoyancy_kg),
+                                             "net buoyancy", kgText(lo), kgText(spec.net_buoyancy_max_kg),
+                                             signedKgText(sol.net_buoyancy_kg),
+                                             extraPieceReaching(pr, model, targets, opt, Band::Buoyancy), false));
     }
     // Warn on the exact attitude; the solver ranks pitch by pitch_x, which is
     // never smaller, so a band it missed may still be met once roll is counted.
     if (opt.pitch_best > kInBandRad && !sol.pitch_in_band) {
-      sol.warnings.push_back("pitch band \u00b1" + degText(spec.pitch_tolerance_deg) +
-                             " not reachable with this kit; best " + signedDegText(sol.pitch_deg) +
-                             suffix(extraPieceReaching(pr, model, targets, opt, Band::Pitch)));
+      sol.warnings.push_back(bandUnreachable("pitch band \u00b1" + degText(spec.pitch_tolerance_deg) +
+                                                 " not reachable with this kit; best " + signedDegText(sol.pitch_deg),
+                                             "pitch", degText(spec.pitch_tolerance_deg), "", signedDegText(sol.pitch_deg),
+                                             extraPieceReaching(pr, model, targets, opt, Band::Pitch), false));
     }
     if (opt.roll_best > kInBandRad && !sol.roll_in_band) {
-      sol.warnings.push_back("roll band \u00b1" + degText(spec.roll_tolerance_deg) +
-                             " not reachable with this kit" +
-                             (opt.pitch_best <= kInBandRad ? " while pitch stays in band" : "") + "; best " +
-                             signedDegText(sol.roll_deg) +
-                             suffix(extraPieceReaching(pr, model, targets, opt, Band::Roll)));
+      const bool pitch_ok = opt.pitch_best <= kInBandRad;
+      sol.warnings.push_back(bandUnreachable("roll band \u00b1" + degText(spec.roll_tolerance_deg) +
+                                                 " not reachable with this kit" +
+                                                 (pitch_ok ? " while pitch stays in band" : "") + "; best " +
+                                                 signedDegText(sol.roll_deg),
+                                             "roll", degText(spec.roll_tolerance_deg), "", signedDegText(sol.roll_deg),
+                                             extraPieceReaching(pr, model, targets, opt, Band::Roll), pitch_ok));
     }
   }
   if (opt.window.best.negative_kg > 1e-6) {
-    sol.warnings.push_back("the vehicle stays " + kgText(opt.window.best.negative_kg) +
-                           " heavy even with every removable piece out; it needs added buoyancy or a lighter payload");
+    sol.warnings.push_back(Message(msg::kStaysHeavy, {kgText(opt.window.best.negative_kg)}));
   }
   if (opt.stats.limited) {
-    sol.warnings.push_back("the search stopped at its node limit: this is the best move found, not a proved optimum");
+    sol.warnings.push_back(Message(msg::kNodeLimit));
   }
   if (!opt.best.outcome.stable) {
-    sol.warnings.push_back("CG is not below CB after the move: the vehicle would capsize; check bg and payload");
+    sol.warnings.push_back(Message(msg::kCapsize));
   }
 }
 

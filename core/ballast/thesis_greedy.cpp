@@ -1,3 +1,4 @@
+#include "ballast/ballast_messages.h"
 #include "ballast/thesis_greedy.h"
 
 #include <Eigen/LU>
@@ -122,8 +123,7 @@ BallastSolution thesisGreedyMapping(const BallastProblem& pr) {
                         " Continuous share " + ballast::kgText(adj.continuous_kg[p]) + ".");
   }
   if (sol.net_buoyancy_kg < -1e-9) {
-    sol.warnings.push_back("the thesis mapping leaves the vehicle " + ballast::kgText(-sol.net_buoyancy_kg) +
-                           " heavy");
+    sol.warnings.push_back(Message(ballast::msg::kThesisHeavy, {ballast::kgText(-sol.net_buoyancy_kg)}));
   }
   return sol;
 }

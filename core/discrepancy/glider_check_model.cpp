@@ -69,7 +69,7 @@ GliderCheckModel::~GliderCheckModel() = default;
 
 GliderCheckModel::GliderCheckModel(const MissionLog& log, const VehicleProfile& v, const GliderCheckOptions& o) {
   latitude_ = analysis::latitudeFromMetadata(log).value_or(seawater::kDefaultLatitude_deg);
-  std::vector<std::string> cnotes;
+  std::vector<Message> cnotes;
   c_ = analysis::gliderConstantsFromProfile(v, cnotes);
   // The check decides whether the log needs a compressibility: 0 stays 0.
   c_.compressibility_per_dbar = v.hull.compressibility_per_dbar;

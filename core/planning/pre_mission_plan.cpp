@@ -1,5 +1,7 @@
 #include "planning/pre_mission_plan.h"
 
+#include "planning/planning_messages.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -142,10 +144,17 @@ void predictFlightPitch(const VehicleProfile& v, const TrimEstimate& e, const Es
   char buf[160];
   std::snprintf(buf, sizeof buf, " (at rest); flying level at %.1f m/s it pitches %+.2f\u00b0, %s", e.cruise_speed_mps,
                 *out.flight_pitch_after_deg, *out.flight_pitch_in_band ? "inside the band" : "outside the band");
-  for (std::string& w : out.warnings) {
+  char speed[32], pitch[32];
+  std::snprintf(speed, sizeof speed, "%.1f", e.cruise_speed_mps);
+  std::snprintf(pitch, sizeof pitch, "%+.2f", *out.flight_pitch_after_deg);
+  for (Message& w : out.warnings) {
     if (w.rfind("pitch band", 0) != 0) continue;
-    const std::size_t semi = w.find(';');
-    w.insert(semi == std::string::npos ? w.size() : semi, buf);
+    std::string english = w;
+    const std::size_t semi = english.find(';');
+    english.insert(semi == std::string::npos ? english.size() : semi, buf);
+    std::vector<std::string> args = w.args();
+    args.insert(args.end(), {speed, pitch, *out.flight_pitch_in_band ? "inside" : "outside"});
+    w = Message(w.id(), english, args);
   }
 }
 
@@ -182,13 +191,10 @@ std::vector<std::vector<int>> classicMove(const VehicleProfile& v, const PreMiss
                             {"roll_error_sign", r.roll_sign}, {"blocked", r.blocked},
                             {"deviations", {{"depth_m", c.depth_error_m}, {"pitch_deg", c.pitch_error_deg},
                                             {"roll_deg", c.roll_deg}}}};
-  out.notes.push_back("Classic table (thesis App. E): " + r.weight_case + ", pitch error " + r.pitch_sign +
-                      ", roll error " + r.roll_sign + "; it moves one " + ballast::sizeText(c.small_piece_kg) +
-                      " piece per point and mission, whatever the size of the error.");
-  if (r.blocked) {
-    out.warnings.push_back("the classic table asks to remove a piece where none is installed, so it changes nothing");
-  }
-  if (in.use_optional_pieces) out.notes.push_back("The classic table uses the standard kit only.");
+  out.notes.push_back(
+      Message(planning::msg::kClassicTable, {r.weight_case, r.pitch_sign, r.roll_sign, ballast::sizeText(c.small_piece_kg)}));
+  if (r.blocked) out.warnings.push_back(Message(planning::msg::kClassicBlocked));
+  if (in.use_optional_pieces) out.notes.push_back(Message(planning::msg::kClassicStandardKit));
   return delta;
 }
 
@@ -314,8 +320,8 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     }
     out.band_hi_kg = pr.spec.net_buoyancy_max_kg;
     out.delta = sol.delta;
-    out.notes = sol.notes;
-    out.warnings = sol.warnings;
+    out.notes.assign(sol.notes.begin(), sol.notes.end());
+    out.warnings.assign(sol.warnings.begin(), sol.warnings.end());
   }
   if (pr.cb_m.x() != v.cb_m.x()) {
     // Report the attitude at rest about the real CB.
@@ -350,22 +356,21 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
       (!out.buoyancy_in_band || 2.0 * out.margin_kg > spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg)) {
     out.calibration_manoeuvre = in.estimate.calibration_manoeuvre;
     const nlohmann::json& m = *out.calibration_manoeuvre;
-    char buf[240];
-    std::snprintf(buf, sizeof buf,
-                  "the net-buoyancy sigma (%.2f kg) is too wide for the %.1f kg band: add the calibration manoeuvre to "
-                  "the next mission (%zu short legs at different speeds); it would bring the sigma to about %.2f kg",
-                  out.net_sigma_kg, spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg, m["legs"].size(),
-                  m["expected_sigma"]["net_buoyancy_kg"].get<double>());
-    out.notes.emplace_back(buf);
+    auto num = [](const char* f, double x) {
+      char b[32];
+      std::snprintf(b, sizeof b, f, x);
+      return std::string(b);
+    };
+    out.notes.push_back(Message(planning::msg::kManoeuvre, {num("%.2f", out.net_sigma_kg),
+                                                  num("%.1f", spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg),
+                                                  std::to_string(m["legs"].size()),
+                                                  num("%.2f", m["expected_sigma"]["net_buoyancy_kg"].get<double>())}));
   }
   explainPlan(v, pr, out);
   if (in.estimate.cg_y_basis == "cruise" && in.estimate.cg_y_m) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf,
-                  "roll is planned and predicted at cruise (%.0f rpm, propeller torque included): the side balance "
-                  "that levels the vehicle there, as the thesis judges roll (§5.3.3)",
-                  in.estimate.cruise_rpm);
-    out.notes.emplace_back(buf);
+    char rpm[32];
+    std::snprintf(rpm, sizeof rpm, "%.0f", in.estimate.cruise_rpm);
+    out.notes.push_back(Message(planning::msg::kRollAtCruise, {rpm}));
   }
   return out;
 }

@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ballast/ballast_problem.h"
+#include "common/message.h"
 #include "firstmission/first_mission_report.h"
 #include "planning/classic_table.h"
 #include "planning/estimated_vehicle.h"
@@ -78,12 +79,12 @@ struct PreMissionPlan {
   std::vector<PlannedPointResult> at_points;  // operating first
   bool safe = false;            // net after >= margin at every point
   bool buoyancy_in_band = false, pitch_in_band = false, roll_in_band = false;
-  std::vector<std::string> explanations;  // one sentence per changed point
+  std::vector<Message> explanations;  // one sentence per changed point (common/message.h)
   // When the estimate's sigma is too wide for the spec band (the margin
   // pushes the vehicle out of it): the short addition to the next mission
   // that would identify the rest {legs, expected_sigma} (issue 11 item 5).
   std::optional<nlohmann::json> calibration_manoeuvre;
-  std::vector<std::string> notes, warnings;
+  std::vector<Message> notes, warnings;
   nlohmann::json details = nlohmann::json::object();
 };
 

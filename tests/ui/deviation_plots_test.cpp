@@ -144,7 +144,7 @@ TEST_F(DeviationPlots, RealSlocumRecording) {
   EXPECT_EQ(p->samples(DeviationPlotsPage::kPitch, 1), log->series("pitch_cmd").size());
   EXPECT_GT(p->pointsDrawn(DeviationPlotsPage::kPitch, 1), 10);
   EXPECT_EQ(p->samples(DeviationPlotsPage::kDepth, 1), 0u);
-  EXPECT_NE(p->view(DeviationPlotsPage::kDepth)->chart()->title().indexOf("depth_cmd"), -1);
+  EXPECT_NE(p->view(DeviationPlotsPage::kDepth)->chart()->title().indexOf("commanded depth"), -1);
 }
 
 }  // namespace auv::ui

@@ -99,7 +99,7 @@ TEST_F(LogImport, ReadsTheSurveyAndSavesTheMission) {
   EXPECT_NE(summary.indexOf("<b>5 channels</b>"), -1) << summary.toStdString();
   EXPECT_NE(summary.indexOf("over 1.50 h"), -1) << summary.toStdString();
   EXPECT_NE(summary.indexOf("Skipped 0 rows"), -1);
-  EXPECT_NE(summary.indexOf("depth_cmd ✓"), -1);
+  EXPECT_NE(summary.indexOf("commanded depth ✓"), -1);
   EXPECT_TRUE(wiz->currentPage()->isComplete());
   shot(*wiz, "20_log_import");
   EXPECT_EQ(QSettings().value("paths/last_log_folder").toString(), dirPath());
@@ -174,7 +174,7 @@ TEST_F(LogImport, DamagedRowsAreSkippedAndExplained) {
   const QString summary = find<QLabel>(*wiz, "import_summary")->text();
   EXPECT_NE(summary.indexOf("Skipped 3 rows"), -1) << summary.toStdString();
   EXPECT_NE(summary.indexOf("rows going back in time"), -1) << summary.toStdString();
-  EXPECT_NE(summary.indexOf("depth_cmd ✗"), -1);
+  EXPECT_NE(summary.indexOf("commanded depth ✗"), -1);
   auto* problems = find<QListWidget>(*wiz, "problems");
   ASSERT_GE(problems->count(), 3);
   EXPECT_NE(problems->item(0)->text().indexOf("damaged.csv:4"), -1) << problems->item(0)->text().toStdString();

@@ -184,7 +184,7 @@ TEST_F(PostMission, HuginSurveyAnalysisShadingCrosshairAndExport) {
   EXPECT_EQ(wiz->state().analysis->details["installed_kg"].get<std::vector<double>>(), installed);
   // CG y is not identifiable without a roll test: said in words.
   EXPECT_FALSE(r.cg_y_mm.known);
-  EXPECT_NE(find<QLabel>(*wiz, "analysis_notes")->text().indexOf("not identifiable"), -1);
+  EXPECT_NE(find<QLabel>(*wiz, "analysis_notes")->text().indexOf("Not identifiable"), -1);
 
   // Operating segments: one shaded band per steady leg on every chart, one table row each.
   const std::size_t used = usedSegments(r);
@@ -301,7 +301,8 @@ TEST_F(PostMission, GliderAnalysisAndModelCheckFindHullCompressibility) {
   EXPECT_NEAR(mc.missing_physics[0].value, 5e-6, 3 * mc.missing_physics[0].sigma);
   auto* terms = find<QTableWidget>(*wiz, "terms");
   ASSERT_EQ(terms->rowCount(), static_cast<int>(mc.missing_physics.size()));
-  EXPECT_EQ(terms->item(0, 0)->text(), "hull_compressibility");
+  EXPECT_EQ(terms->item(0, 0)->data(Qt::UserRole).toString(), "hull_compressibility");
+  EXPECT_EQ(terms->item(0, 0)->text(), "hull compressibility");  // the id in words
   EXPECT_EQ(terms->item(0, 0)->checkState(), Qt::Checked);
   EXPECT_NEAR(terms->item(0, 1)->text().section(' ', 0, 0).toDouble(), mc.missing_physics[0].value,
               mc.missing_physics[0].value * 1e-3);
@@ -411,7 +412,8 @@ TEST_F(PostMission, DelphinModelCheckCalibratesThePropellerTorque) {
   // profile's 0.0075, i.e. 53 % more torque.
   for (const auto& term : mc.missing_physics) EXPECT_NE(term.id, "propeller_torque");
   auto* terms = find<QTableWidget>(*wiz, "terms");
-  for (int row = 0; row < terms->rowCount(); ++row) EXPECT_NE(terms->item(row, 0)->text(), "propeller_torque");
+  for (int row = 0; row < terms->rowCount(); ++row)
+    EXPECT_NE(terms->item(row, 0)->data(Qt::UserRole).toString(), "propeller_torque");
   const auto torque = std::find_if(mc.calibration.begin(), mc.calibration.end(),
                                    [](const auto& c) { return c.id == "propeller_torque"; });
   ASSERT_NE(torque, mc.calibration.end());

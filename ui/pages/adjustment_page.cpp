@@ -1,5 +1,7 @@
 #include "pages/adjustment_page.h"
 
+#include "wizard/advice_text.h"
+
 #include <QAction>
 #include <QEvent>
 #include <QGridLayout>
@@ -325,8 +327,8 @@ void AdjustmentPage::showPlan() {
   prediction_->resizeColumnsToContents();
 
   QStringList lines;
-  for (const auto& w : p.warnings) lines << QString("<span style='color:#b00020'>⚠ %1</span>").arg(q(w).toHtmlEscaped());
-  for (const auto& e : p.explanations) lines << q(e).toHtmlEscaped();
+  for (const auto& w : p.warnings) lines << QString("<span style='color:#b00020'>⚠ %1</span>").arg(adviceText(w).toHtmlEscaped());
+  for (const auto& e : p.explanations) lines << adviceText(e).toHtmlEscaped();
   QStringList pts;
   for (const auto& r : p.at_points) {
     pts << tr("%1 m %2 kg").arg(r.water.depth_m, 0, 'f', 0).arg(signedFixed(r.net_after_kg, nd));

@@ -112,6 +112,16 @@ void CraneWeighingPage::initializePage() {
   for (std::size_t i = 0; i < 4; ++i) {
     scales_[i]->setValue(w.scales_kg[i]);
     installed_[i]->setValue(i < state_.crane.installed_kg.size() ? state_.crane.installed_kg[i] : 0.0);
+    // One row per adjustment point of the profile, named by its label (a
+    // Delphin2 has two; the four scales stay).
+    const bool used = !state_.vehicle || i < state_.vehicle->points.size();
+    installed_[i]->setVisible(used);
+    if (auto* form = qobject_cast<QFormLayout*>(installed_[i]->parentWidget()->layout())) {
+      if (auto* l = qobject_cast<QLabel*>(form->labelForField(installed_[i]))) {
+        l->setVisible(used);
+        if (used && state_.vehicle) l->setText(QString::fromStdString(state_.vehicle->points[i].label) + ":");
+      }
+    }
     if (state_.vehicle && i < state_.vehicle->points.size()) {
       installed_[i]->setToolTip(tr("Kit pieces already in '%1', in kg.")
                                     .arg(QString::fromStdString(state_.vehicle->points[i].label)));
@@ -160,7 +170,8 @@ void CraneWeighingPage::store() {
   w.rope_x_aft_m = rope_aft_->value();
   w.rope_y_m = rope_y_->value();
   state_.crane.installed_kg.clear();
-  for (auto* s : installed_) state_.crane.installed_kg.push_back(s->value());
+  const std::size_t points = state_.vehicle ? std::min<std::size_t>(state_.vehicle->points.size(), 4) : 4;
+  for (std::size_t i = 0; i < points; ++i) state_.crane.installed_kg.push_back(installed_[i]->value());
 }
 
 bool CraneWeighingPage::validatePage() {

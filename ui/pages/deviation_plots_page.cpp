@@ -200,7 +200,10 @@ void DeviationPlotsPage::buildPlot(PlotData& p, const char* measured, const char
     tr.v.clear();
     tr.channel = nullptr;
     if (!names[s] || !log.has(names[s])) {
-      if (names[s]) missing << names[s];
+      if (names[s]) {
+        const QString n = QString::fromLatin1(names[s]);
+        missing << (n == "depth_cmd" ? DeviationPlotsPage::tr("commanded depth") : n == "pitch_cmd" ? DeviationPlotsPage::tr("commanded pitch") : DeviationPlotsPage::tr(names[s]));
+      }
       tr.series->setVisible(false);
       continue;
     }

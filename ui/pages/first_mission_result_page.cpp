@@ -21,6 +21,7 @@
 #include "firstmission/hugin_first_mission.h"
 #include "firstmission/slocum_first_mission.h"
 #include "history/store.h"
+#include "widgets/fit_scroll_area.h"
 #include "widgets/inputs.h"
 #include "widgets/weight_map_widget.h"
 #include "wizard/history_save.h"
@@ -79,7 +80,17 @@ FirstMissionResultPage::FirstMissionResultPage(WizardState& state) : state_(stat
   auto* export_row = new QHBoxLayout;
   export_row->addWidget(export_pdf_);
   export_row->addWidget(export_status_, 1);
-  auto* lay = new QVBoxLayout(this);
+  // Everything in a scroll area: with the glider's steps and the installed
+  // masses the page is taller than a 1366 x 768 screen leaves for it.
+  auto* content = new QWidget;
+  content->setObjectName("result_content");
+  auto* page_scroll = new FitScrollArea;
+  page_scroll->setObjectName("result_scroll");
+  page_scroll->setWidget(content);
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(0, 0, 0, 0);
+  outer->addWidget(page_scroll);
+  auto* lay = new QVBoxLayout(content);
   lay->addWidget(before_);
   lay->addWidget(table_);
   // The map and the notes share the height: for a glider the notes carry

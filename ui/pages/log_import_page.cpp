@@ -88,7 +88,7 @@ LogImportPage::LogImportPage(WizardState& state) : state_(state) {
   path_->setToolTip(tr("The mission log: a file, several files of one mission separated by \"; \", or the "
                        "folder the vehicle's files are in (type or paste it, or drop the folder here)."));
   path_->setMinimumHeight(32);
-  browse_ = button(tr("&Browse…"), "browse",
+  browse_ = button(tr("B&rowse…"), "browse",
                    tr("Choose the log file, or several files of one mission (they are merged on time)."));
 
   import_ = button(tr("&Import"), "import", tr("Read the file named on the left."));
@@ -347,9 +347,12 @@ void LogImportPage::showSummary() {
   const MissionLog& log = *state_.log;
   const ReadReport& r = *state_.log_report;
   QStringList plotted;
-  for (const char* name : {"depth", "depth_cmd", "pitch", "pitch_cmd", "roll"}) {
-    plotted << QString("%1 %2").arg(name, log.has(name) ? "✓" : "✗");
-  }
+  const std::pair<const char*, QString> channels[] = {{"depth", tr("depth")},
+                                                       {"depth_cmd", tr("commanded depth")},
+                                                       {"pitch", tr("pitch")},
+                                                       {"pitch_cmd", tr("commanded pitch")},
+                                                       {"roll", tr("roll")}};
+  for (const auto& [name, label] : channels) plotted << QString("%1 %2").arg(label, log.has(name) ? "✓" : "✗");
   QStringList why;
   for (int k = 0; k < static_cast<int>(ReadProblemKind::kCount); ++k) {
     const auto kind = static_cast<ReadProblemKind>(k);

@@ -1,5 +1,7 @@
 #include "pages/model_check_page.h"
 
+#include "wizard/model_words.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QGraphicsLayout>
@@ -245,7 +247,7 @@ void ModelCheckPage::showResult() {
   }
   status_->setStyleSheet(QString());
   const auto& r = *outcome_.result;
-  status_->setText(tr("Model: %1.").arg(q(outcome_.description)));
+  status_->setText(tr("Model: %1.").arg(readableModelText(outcome_.description)));
   showSummary();
   calibration_->showRows(CalibrationTable::rowsOf(r.calibration));
   const auto& ov = outcome_.overlay;
@@ -253,7 +255,7 @@ void ModelCheckPage::showResult() {
   for (std::size_t i = 0; i < ov.channels.size(); ++i) {
     const auto& c = ov.channels[i];
     if (c.scored == 0) continue;
-    QString name = tr("%1 [%2]").arg(q(discrepancy::channelName(c.channel)), q(c.unit));
+    QString name = tr("%1 [%2]").arg(channelLabel(c.channel), q(c.unit));
     if (i == ov.largest) name += tr(" - largest mismatch");
     channel_->addItem(name, static_cast<int>(i));
   }
@@ -345,11 +347,11 @@ void ModelCheckPage::showChannel(int index) {
   const bool depth = c.channel == discrepancy::Channel::kDepth;
   y_->setReverse(depth && !diff);
   y_->setTitleText(diff ? tr("difference [%1]").arg(q(c.unit))
-                        : tr("%1 [%2]").arg(q(discrepancy::channelName(c.channel)), q(c.unit)));
+                        : tr("%1 [%2]").arg(channelLabel(c.channel), q(c.unit)));
   series_[1]->setName(diff ? tr("recorded − model, ballast state only") : tr("model, ballast state only"));
   series_[2]->setName(diff ? tr("recorded − model with the accepted terms") : tr("model with the accepted terms"));
   chart_->setTitle(tr("%1: RMS recorded − model %2 → %3 %4 (ballast state only → with the accepted terms)")
-                       .arg(q(discrepancy::channelName(c.channel)), sig(c.rms_before, 3), sig(c.rms_after, 3), q(c.unit)));
+                       .arg(channelLabel(c.channel), sig(c.rms_before, 3), sig(c.rms_after, 3), q(c.unit)));
 }
 
 void ModelCheckPage::setShowDifference(bool on) {
@@ -378,7 +380,7 @@ void ModelCheckPage::showTerms() {
   for (const auto& m : found) {
     const int r = terms_->rowCount();
     terms_->insertRow(r);
-    auto* name = new QTableWidgetItem(q(m.id));
+    auto* name = new QTableWidgetItem(termLabel(m.id));
     name->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable | Qt::ItemIsSelectable);
     const bool on = std::find(state_.accepted_terms.begin(), state_.accepted_terms.end(), m.id) != state_.accepted_terms.end();
     name->setCheckState(on ? Qt::Checked : Qt::Unchecked);
@@ -397,7 +399,7 @@ void ModelCheckPage::showTerms() {
         tr("%1 → %2 %3").arg(sig(m.rms_before, 3), sig(m.rms_after, 3), q(discrepancy::channelUnit(m.channel))));
     rms->setToolTip(tr("Held-out simulation RMS of %1, without and with this term (fitted on one half of the "
                        "dives/legs, scored on the other).")
-                        .arg(q(discrepancy::channelName(m.channel))));
+                        .arg(channelLabel(m.channel)));
     terms_->setItem(r, 2, rms);
   }
   terms_->resizeColumnsToContents();
@@ -408,7 +410,7 @@ void ModelCheckPage::showWhere() {
   const auto& r = *outcome_.result;
   QStringList lines;
   for (const auto& m : r.missing_physics)
-    if (!m.where.empty()) lines << tr("<b>%1</b> acts where: %2").arg(q(m.id), q(m.where).toHtmlEscaped());
+    if (!m.where.empty()) lines << tr("<b>%1</b> acts where: %2").arg(termLabel(m.id), readableModelText(m.where).toHtmlEscaped());
   lines << tr("<b>Where the ballast-only model misses</b>:");
   // The shown channel's simulation error first, then the rest.
   const int shown = shownChannel();
@@ -421,10 +423,10 @@ void ModelCheckPage::showWhere() {
     });
   }
   for (const auto* l : loc)
-    lines << tr("%1, %2: %3").arg(q(l->source), q(discrepancy::channelName(l->channel)), q(l->summary).toHtmlEscaped());
-  for (const auto& i : r.identifiability) lines << tr("Cannot be told apart: %1").arg(q(i.message).toHtmlEscaped());
-  for (const auto& w : r.warnings) lines << QStringLiteral("⚠ %1").arg(q(w).toHtmlEscaped());
-  for (const auto& n : r.notes) lines << QStringLiteral("<span style='color:#555'>%1</span>").arg(q(n).toHtmlEscaped());
+    lines << tr("%1, %2: %3").arg(q(l->source), channelLabel(l->channel), readableModelText(l->summary).toHtmlEscaped());
+  for (const auto& i : r.identifiability) lines << tr("Cannot be told apart: %1").arg(readableModelText(i.message).toHtmlEscaped());
+  for (const auto& w : r.warnings) lines << QStringLiteral("⚠ %1").arg(readableModelText(w).toHtmlEscaped());
+  for (const auto& n : r.notes) lines << QStringLiteral("<span style='color:#555'>%1</span>").arg(readableModelText(n).toHtmlEscaped());
   where_->setText(lines.join("<br>"));
 }
 

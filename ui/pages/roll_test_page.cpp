@@ -30,7 +30,7 @@ const char* const kBottleLabels[4] = {
 
 RollTestPage::RollTestPage(WizardState& state) : state_(state) {
   setTitle(tr("Slocum roll test"));
-  setSubTitle(tr("Wings off, glider hanging free from the nose hook and tail loop. Read m_roll with nothing hung, "
+  setSubTitle(tr("Wings off, glider hanging free from the nose hook and tail loop. Read the roll the glider reports with nothing hung, "
                  "then with each known mass hung on a wing rail."));
 
   after_step_ = new QCheckBox(tr("Bottles set after the tank st&ep"));
@@ -59,16 +59,16 @@ RollTestPage::RollTestPage(WizardState& state) : state_(state) {
   roll_done_->setObjectName("roll_done");
   roll_done_->setToolTip(tr("Untick to compute without a roll test (the CG height then comes from the profile)."));
   initial_roll_ = makeNumber("initial_roll", -1, 1, 3, tr(" rad"),
-                           tr("m_roll with nothing hung, in radians as the glider reports it (starboard down positive)."));
+                           tr("The roll the glider reports with nothing hung, in radians (starboard down positive)."));
   lever_arm_ = makeNumber("lever_arm", 0.01, 1, 4, tr(" m"),
                         tr("Horizontal distance from the hull axis to where the mass hangs (the hull radius for a "
                            "mass on the rail)."));
   table_ = new QTableWidget(0, 3);
   table_->setObjectName("roll_table");
-  table_->setHorizontalHeaderLabels({tr("Mass hung"), tr("Rail"), tr("m_roll reading")});
+  table_->setHorizontalHeaderLabels({tr("Mass hung"), tr("Rail"), tr("Roll reading")});
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
   table_->verticalHeader()->setDefaultSectionSize(36);
-  table_->setToolTip(tr("One row per applied mass: its submerged mass, the rail it hangs on and m_roll with it hanging."));
+  table_->setToolTip(tr("One row per applied mass: its submerged mass, the rail it hangs on and the roll the glider reports with it hanging."));
   add_row_ = new QPushButton(tr("&Add mass"));
   add_row_->setObjectName("add_row");
   add_row_->setToolTip(tr("Add a row for another applied mass."));
@@ -168,7 +168,7 @@ void RollTestPage::addRow(double mass_kg, bool starboard, double roll_rad) {
   rail->setToolTip(tr("The wing rail the mass hangs on."));
   rail->setMinimumHeight(32);
   auto* roll = makeNumber(QString("roll_reading_%1").arg(r), -1.5, 1.5, 3, tr(" rad"),
-                        tr("m_roll with this mass hanging and the glider at rest, in radians."));
+                        tr("The roll the glider reports with this mass hanging and the glider at rest, in radians."));
   mass->setValue(mass_kg);
   rail->setCurrentIndex(starboard ? 1 : 0);
   roll->setValue(roll_rad);

@@ -7,11 +7,11 @@
 
 #include "widgets/estimate_text.h"
 #include "widgets/inputs.h"
+#include "wizard/advice_text.h"
 
 namespace auv::ui {
 namespace {
 
-QString q(const std::string& s) { return QString::fromStdString(s); }
 
 QLabel* resultLabel(const char* name) {
   auto* l = new QLabel;
@@ -111,13 +111,13 @@ void AnalysisSummary::show(const analysis::AnalysisReport* report, bool glider, 
                            meanText(r.salinity_psu, 2, tr(" PSU"), false),
                            meanText(r.density_kgm3, 2, tr(" kg/m³"), false)));
   QStringList lines;
-  for (const auto& w : r.warnings) lines << QStringLiteral("⚠ %1").arg(q(w).toHtmlEscaped());
+  for (const auto& w : r.warnings) lines << QStringLiteral("⚠ %1").arg(adviceText(w).toHtmlEscaped());
   const std::pair<const char*, const analysis::EstimatedValue*> est[] = {
       {QT_TR_NOOP("Net buoyancy"), &r.net_buoyancy_kg}, {QT_TR_NOOP("CG x"), &r.cg_x_mm}, {QT_TR_NOOP("CG y"), &r.cg_y_mm}};
   for (const auto& [name, e] : est)
-    if (!e->known && !e->why_not.empty()) lines << tr("<b>%1</b>: %2").arg(tr(name), q(e->why_not).toHtmlEscaped());
-  if (!r.pitch_error_basis.empty()) lines << tr("Pitch error: %1").arg(q(r.pitch_error_basis).toHtmlEscaped());
-  for (const auto& n : r.notes) lines << QStringLiteral("<span style='color:#555'>%1</span>").arg(q(n).toHtmlEscaped());
+    if (!e->known && !e->why_not.empty()) lines << tr("<b>%1</b>: %2").arg(tr(name), adviceText(e->why_not).toHtmlEscaped());
+  if (!r.pitch_error_basis.empty()) lines << tr("Pitch error: %1").arg(adviceText(r.pitch_error_basis).toHtmlEscaped());
+  for (const auto& n : r.notes) lines << QStringLiteral("<span style='color:#555'>%1</span>").arg(adviceText(n).toHtmlEscaped());
   notes_->setText(lines.join("<br>"));
 }
 

@@ -211,6 +211,11 @@ bool OperatorWizard::validateCurrentPage() {
 
 void OperatorWizard::initializePage(int id) {
   QWizard::initializePage(id);
+  // Enter is Next/Finish from anywhere on the page: a page button (Browse,
+  // Export, Undo) with the focus would otherwise take Enter for itself
+  // (Space still presses it).
+  for (QPushButton* b : page(id)->findChildren<QPushButton*>())
+    if (b->window() == this) b->setAutoDefault(false);
   // Tab from the page's last field lands on Next (or Finish), so Enter after
   // Tab goes forward; Back, Cancel and Help follow.
   // Fields a page builds in initializePage join the chain at its end, after

@@ -1,5 +1,7 @@
 #include "wizard/work_order.h"
 
+#include "wizard/advice_text.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QFont>
@@ -189,7 +191,7 @@ WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint 
              << (r.safe ? WorkOrder::tr("Safe: at least %1 kg light (1.645 σ) at every planned depth.")
                         : WorkOrder::tr("NOT SAFE: less than %1 kg light (1.645 σ) at a planned depth."))
                     .arg(fixed(p.margin_kg, nd));
-  for (const auto& x : p.warnings) w.warnings << q(x);
+  for (const auto& x : p.warnings) w.warnings << adviceText(x);
   if (basis.from_session) w.header << EstimateText::planUses(basis.source);
   if (basis.report.is_object())
     w.calibration = CalibrationTable::lines(CalibrationTable::rowsFromJson(basis.report.value("calibration", nlohmann::json::array())));

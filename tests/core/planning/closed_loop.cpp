@@ -178,7 +178,7 @@ Outcome Harness::runOnce(const LoopCase& c, PlanPolicy policy, bool optional_pie
   o.after = fly(t, c.water2);
   o.spec = judge(o.after, o.best_roll_deg);
   o.safe = o.after.min_net_kg >= 0.0;
-  o.warnings = p.warnings;
+  o.warnings.assign(p.warnings.begin(), p.warnings.end());
   return o;
 }
 

@@ -21,7 +21,8 @@ double addedKg(const PreMissionPlan& p) {
   return s;
 }
 
-bool anyContains(const std::vector<std::string>& v, const std::string& what) {
+template <class Strings>
+bool anyContains(const Strings& v, const std::string& what) {
   for (const auto& s : v) {
     if (s.find(what) != std::string::npos) return true;
   }

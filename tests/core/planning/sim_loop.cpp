@@ -204,7 +204,7 @@ SimOutcome SimHarness::runOnce(const SimLoopCase& c, PlanPolicy policy, bool opt
   o.predicted_pitch_deg = p.predicted.pitch_deg;
   o.predicted_roll_deg = p.predicted.roll_deg;
   o.predicted_flight_pitch_deg = p.flight_pitch_after_deg;
-  o.warnings = p.warnings;
+  o.warnings.assign(p.warnings.begin(), p.warnings.end());
   o.after = fly(c, after, c.water2, c.seed + 1);
   o.spec = judge(o.after, best_flown);
   o.safe = o.after.net_kg >= 0.0;

@@ -1,0 +1,213 @@
+#include "wizard/advice_text.h"
+
+#include <QCoreApplication>
+#include <QHash>
+#include <cmath>
+
+namespace auv::ui {
+namespace {
+
+// id -> the wizard's English sentence (%1.. as in core's format; a sentence
+// may leave out an argument the page shows elsewhere).
+struct Advice {
+  const char* id;
+  const char* text;
+};
+
+// clang-format off
+constexpr Advice kAdvice[] = {
+  // Analysis (core/analysis/analysis_messages.h).
+  {"analysis.no_steady_glide", QT_TRANSLATE_NOOP("Advice", "No steady dive or climb long enough was found: nothing to estimate from.")},
+  {"analysis.no_steady_level", QT_TRANSLATE_NOOP("Advice", "No steady level flight of at least %1 s was found: errors and estimates are not available.")},
+  {"analysis.window_excluded", QT_TRANSLATE_NOOP("Advice", "%1: %2 interval(s), %3 s left out of the steady windows.")},
+  {"analysis.pitch_basis_glide", QT_TRANSLATE_NOOP("Advice", "measured minus commanded, during glides whose command has the phase's sign")},
+  {"analysis.pitch_basis_level", QT_TRANSLATE_NOOP("Advice", "measured minus commanded, in steady level flight")},
+  {"analysis.pitch_basis_no_command", QT_TRANSLATE_NOOP("Advice", "pitch at steady depth (the log has no commanded pitch; level flight should be at 0°)")},
+  {"analysis.no_depth_command", QT_TRANSLATE_NOOP("Advice", "The log has no commanded depth: the depth error is not available.")},
+  {"analysis.ctd_out_of_range", QT_TRANSLATE_NOOP("Advice", "%1 CTD samples outside the EOS-80 range were not used for the density.")},
+  {"analysis.no_density", QT_TRANSLATE_NOOP("Advice", "No in-situ density could be computed (no temperature and salinity or density in the log): %1 kg/m³ assumed.")},
+  {"analysis.glider_cg_x", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: a glider's pitch is set by its battery position, not by a fixed CG (use the tank or pitch-trim procedure).")},
+  {"analysis.glider_cg_y", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: the glider's roll is set by its roll mass (use the tank procedure).")},
+  {"analysis.no_pump_volume", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: it has no pump volume (the buoyancy engine's volume).")},
+  {"analysis.no_pitch", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: it has no pitch.")},
+  {"analysis.no_steady_dive_or_climb", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: no steady dive or climb was found.")},
+  {"analysis.few_glide_samples", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: fewer than 10 steady-glide samples deeper than %1 m with a pitch of at least %2°.")},
+  {"analysis.log_mass_differs", QT_TRANSLATE_NOOP("Advice", "The log gives the mass as %1 kg but the vehicle profile has %2 kg: the fit uses the profile's mass (it matters only through density changes).")},
+  {"analysis.glider_fit_not_converged", QT_TRANSLATE_NOOP("Advice", "The glider flight-model fit did not converge: %1")},
+  {"analysis.glider_default_constants", QT_TRANSLATE_NOOP("Advice", "The glider flight-model constants are the Slocum defaults (wing area 0.1 m², lift slope 7.53 per rad, induced drag 10.5 per rad²): give this glider's flight model in its vehicle profile.")},
+  {"analysis.glider_default_compressibility", QT_TRANSLATE_NOOP("Advice", "The hull compressibility is not in the vehicle profile: 5e-6 per dbar is used.")},
+  {"analysis.no_roll_samples", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: no steady segment has roll samples.")},
+  {"analysis.no_prop_rpm", QT_TRANSLATE_NOOP("Advice", "The log has no propeller speed: CG y assumes the roll at cruise is static; any propeller reaction torque is included in it.")},
+  {"analysis.one_cruise_rpm", QT_TRANSLATE_NOOP("Advice", "All steady segments run the propeller at about the same speed, so its reaction torque cannot be told from a CG offset: CG y is the offset that levels the vehicle at this cruise speed, not the static CG.")},
+  {"analysis.cg_y_needs_bg", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: a steady roll gives y = BG tan(roll), and BG (the CG height below the CB) cannot be measured from the log. Enter BG from an inclining or roll test for this configuration (static roll %1°).")},
+  {"analysis.no_steady_level_segment", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: no steady level flight long enough was found.")},
+  {"analysis.no_speed", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: it has no speed (the lift and moment that balance the buoyancy grow with the speed squared).")},
+  {"analysis.no_speed_and_pitch", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: no steady segment has both speed and pitch.")},
+  {"analysis.no_elevator", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: it has no elevator (stern-plane) angle, so each steady segment only fixes a moment about the planes' centre of pressure (%1 m from the CB). Record the elevator angle.")},
+  {"analysis.history_calibration", QT_TRANSLATE_NOOP("Advice", "Calibrated with %1 steady segments of earlier missions of this configuration and the known weight changes since.")},
+  {"analysis.degenerate", QT_TRANSLATE_NOOP("Advice", "Not identifiable from this log: the steady segments do not determine the heave and pitch balance.")},
+  {"analysis.elevator_offset_prior", QT_TRANSLATE_NOOP("Advice", "Elevator zero offset assumed 0 ± %1° (included in the uncertainties): the steady segments do not span enough speeds to tell it from the net buoyancy.")},
+  {"analysis.plane_sign_converted", QT_TRANSLATE_NOOP("Advice", "The plane coefficients were converted to the log's elevator sign (trailing edge down positive).")},
+  {"analysis.joint_calibration", QT_TRANSLATE_NOOP("Advice", "The vehicle's hydrodynamics were calibrated together with the ballast state (%1 parameters determined by the log).")},
+  {"analysis.posterior_sigmas", QT_TRANSLATE_NOOP("Advice", "The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients).")},
+  {"analysis.posterior_sigmas_munk", QT_TRANSLATE_NOOP("Advice", "The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients; the Munk moment's form unknown).")},
+  {"analysis.bg_from_profile", QT_TRANSLATE_NOOP("Advice", "BG from the vehicle profile (%1 mm ± %2 %) sets the scale of the pitch moments; BG from a roll test sharpens CG x.")},
+  // Ballast solver (core/ballast/ballast_messages.h).
+  {"ballast.stays_heavy", QT_TRANSLATE_NOOP("Advice", "The vehicle stays %1 heavy even with every removable piece out: it needs added buoyancy or a lighter payload.")},
+  {"ballast.node_limit", QT_TRANSLATE_NOOP("Advice", "The search stopped at its limit: this is the best change found, not a proved optimum.")},
+  {"ballast.capsize", QT_TRANSLATE_NOOP("Advice", "The CG is not below the CB after the change: the vehicle would capsize. Check BG and the payload.")},
+  {"ballast.thesis_heavy", QT_TRANSLATE_NOOP("Advice", "The thesis mapping leaves the vehicle %1 heavy.")},
+  // Pre-mission plan (core/planning/planning_messages.h).
+  {"plan.no_change", QT_TRANSLATE_NOOP("Advice", "No change: the vehicle is already as good as the kit allows.")},
+  {"plan.next_mission", QT_TRANSLATE_NOOP("Advice", "Next mission at %1: from net buoyancy %2, pitch %3, roll %4 to %5 ± %6, pitch %7 ± %8, roll %9 ± %10 (1 σ).")},
+  {"plan.mass_from_last_mission", QT_TRANSLATE_NOOP("Advice", "Mass %1 from the last mission: %2 displaced at %3, %4, %5 minus the measured net buoyancy %6.")},
+  {"plan.safety_margin", QT_TRANSLATE_NOOP("Advice", "Safety margin %1 = %2 × σ %3 (estimate and water): the change keeps at least that much net buoyancy at every planned point.")},
+  {"plan.cg_x_assumed", QT_TRANSLATE_NOOP("Advice", "CG x was not identified from the log: the plan assumes it at the CB and keeps the fore-aft balance. Check pitch on the next mission.")},
+  {"plan.cg_y_assumed", QT_TRANSLATE_NOOP("Advice", "CG y was not identified from the log: the plan assumes it at the CB and keeps the side balance. Check roll on the next mission.")},
+  {"plan.unsafe", QT_TRANSLATE_NOOP("Advice", "UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4.")},
+  {"plan.unsafe_sinks", QT_TRANSLATE_NOOP("Advice", "UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4: it would sink if it lost power there.")},
+  {"plan.above_band_for_margin", QT_TRANSLATE_NOOP("Advice", "Net buoyancy %1 at the operating depth is above the band (%2) because the safety margin (%3) and the less buoyant planned points (%4 less) come first.")},
+  {"plan.band_not_reachable", QT_TRANSLATE_NOOP("Advice", "The net buoyancy band cannot be reached with this kit while keeping the safety margin: no combination of pieces lands between %1 and %2; the nearest safe one is %3.")},
+  {"plan.optional_pieces", QT_TRANSLATE_NOOP("Advice", "The kit has optional pieces (%1) not used in this plan; allowing them may reach the missed band.")},
+  {"plan.wide_sigma", QT_TRANSLATE_NOOP("Advice", "The estimate's own uncertainty (pitch %1, roll %2) is wider than a tolerance band; the next mission will tell.")},
+  {"plan.classic_table", QT_TRANSLATE_NOOP("Advice", "Classic table (thesis App. E): %1, pitch error %2, roll error %3; it moves one %4 piece per point and mission, whatever the size of the error.")},
+  {"plan.classic_blocked", QT_TRANSLATE_NOOP("Advice", "The classic table asks to remove a piece where none is installed, so it changes nothing.")},
+  {"plan.classic_standard_kit", QT_TRANSLATE_NOOP("Advice", "The classic table uses the standard kit only.")},
+  {"plan.manoeuvre", QT_TRANSLATE_NOOP("Advice", "The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short legs at different speeds); it would bring the uncertainty to about %4 kg.")},
+  {"plan.roll_at_cruise", QT_TRANSLATE_NOOP("Advice", "Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).")},
+};
+
+// Words core passes as arguments; translated one by one.
+[[maybe_unused]] constexpr const char* kWords[] = {
+  QT_TRANSLATE_NOOP("AdviceWord", "operating"), QT_TRANSLATE_NOOP("AdviceWord", "deepest"),
+  QT_TRANSLATE_NOOP("AdviceWord", "surface"), QT_TRANSLATE_NOOP("AdviceWord", "transit"),
+  QT_TRANSLATE_NOOP("AdviceWord", "none"),
+};
+// clang-format on
+
+const QHash<QString, const char*>& table() {
+  static const QHash<QString, const char*> t = [] {
+    QHash<QString, const char*> h;
+    for (const Advice& a : kAdvice) h.insert(QString::fromLatin1(a.id), a.text);
+    return h;
+  }();
+  return t;
+}
+
+QString word(const std::string& arg) {
+  const QByteArray utf8 = QByteArray::fromStdString(arg);
+  return QCoreApplication::translate("AdviceWord", utf8.constData());
+}
+
+QString fill(QString text, const std::vector<std::string>& args) {
+  // All at once (QString::arg with a list would re-scan substituted text).
+  QString out;
+  for (qsizetype i = 0; i < text.size(); ++i) {
+    if (text[i] == '%' && i + 1 < text.size() && text[i + 1].isDigit() && text[i + 1] != '0') {
+      qsizetype k = text[i + 1].digitValue(), used = 1;
+      if (i + 2 < text.size() && text[i + 2].isDigit() && k * 10 + text[i + 2].digitValue() <= qsizetype(args.size()))
+        k = k * 10 + text[i + 2].digitValue(), used = 2;
+      if (k <= qsizetype(args.size())) {
+        out += word(args[static_cast<std::size_t>(k - 1)]);
+        i += used;
+        continue;
+      }
+    }
+    out += text[i];
+  }
+  return out;
+}
+
+// plan.explain_point: label, removed, added, signed kg, |kg|, x mm, y mm,
+// lowers/raises, x/y, back/balanced (core/planning/planning_messages.h).
+QString explainPoint(const std::vector<std::string>& a) {
+  if (a.size() < 10) return {};
+  auto q = [](const std::string& s) { return QString::fromStdString(s); };
+  const QString and_ = QCoreApplication::translate("Advice", " and ");
+  const QString rem = q(a[1]).replace(" and ", and_), add = q(a[2]).replace(" and ", and_);
+  QString pieces;
+  if (!rem.isEmpty() && !add.isEmpty())
+    pieces = QCoreApplication::translate("Advice", "remove %1, then add %2").arg(rem, add);
+  else if (!rem.isEmpty())
+    pieces = QCoreApplication::translate("Advice", "remove %1").arg(rem);
+  else
+    pieces = QCoreApplication::translate("Advice", "add %1").arg(add);
+  const double x = q(a[5]).toDouble(), y = q(a[6]).toDouble();
+  const QString xs = (x >= 0 ? QCoreApplication::translate("Advice", "%1 mm forward")
+                             : QCoreApplication::translate("Advice", "%1 mm aft"))
+                         .arg(QString::number(std::abs(x), 'f', 2));
+  const QString ys = (y >= 0 ? QCoreApplication::translate("Advice", "%1 mm to starboard")
+                             : QCoreApplication::translate("Advice", "%1 mm to port"))
+                         .arg(QString::number(std::abs(y), 'f', 2));
+  const bool back = a[9] == "back", along_x = a[8] == "x";
+  const char* tail = along_x ? (back ? QT_TRANSLATE_NOOP("Advice", "bringing the CG back towards the CB fore-aft")
+                                     : QT_TRANSLATE_NOOP("Advice", "balanced by the other points' fore-aft shares"))
+                             : (back ? QT_TRANSLATE_NOOP("Advice", "bringing the CG back towards the CB sideways")
+                                     : QT_TRANSLATE_NOOP("Advice", "balanced by the other points' sideways shares"));
+  const QString sentence =
+      a[7] == "lowers"
+          ? QCoreApplication::translate("Advice", "%1: %2 (%3), which lowers the net buoyancy by %4 and moves the CG %5 and %6, %7.")
+          : QCoreApplication::translate("Advice", "%1: %2 (%3), which raises the net buoyancy by %4 and moves the CG %5 and %6, %7.");
+  return sentence.arg(q(a[0]), pieces, q(a[3]), q(a[4]), xs, ys, QCoreApplication::translate("Advice", tail));
+}
+
+// ballast.band_unreachable: band, low end or tolerance, high end, best,
+// extra-piece kind, its size(s), "pitch_ok"; pitch may add speed, flight
+// pitch, "inside"/"outside" (core/ballast/ballast_messages.h).
+QString bandUnreachable(const std::vector<std::string>& a) {
+  if (a.size() < 7) return {};
+  auto q = [](const std::string& s) { return QString::fromStdString(s); };
+  auto t = [](const char* s) { return QCoreApplication::translate("Advice", s); };
+  QString s;
+  if (a[0] == "net buoyancy")
+    s = t("The net buoyancy band %1 to %2 cannot be reached with this kit; best %3").arg(q(a[1]), q(a[2]), q(a[3]));
+  else if (a[0] == "pitch")
+    s = t("The pitch band ±%1 cannot be reached with this kit (at rest); best %2").arg(q(a[1]), q(a[3]));
+  else if (a[6] == "pitch_ok")
+    s = t("The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2").arg(q(a[1]), q(a[3]));
+  else
+    s = t("The roll band ±%1 cannot be reached with this kit; best %2").arg(q(a[1]), q(a[3]));
+  if (a.size() >= 10)
+    s += (a[9] == "inside" ? t("; flying level at %1 m/s it pitches %2°, inside the band")
+                           : t("; flying level at %1 m/s it pitches %2°, outside the band"))
+             .arg(q(a[7]), q(a[8]));
+  if (a[4] == "out_of_reach")
+    s += t("; out of reach whatever the piece sizes: the points' capacities, the installed pieces and the higher "
+           "priorities limit it");
+  else if (a[4] == "piece")
+    s += t("; a %1 piece would reach it").arg(q(a[5]));
+  else if (a[4] == "none_tried")
+    s += t("; no single extra piece size tried (%1) would reach it").arg(q(a[5]));
+  else if (a[4] == "none_tried_undecided")
+    s += t("; no single extra piece size tried (%1) would reach it (some were not searched to the end)").arg(q(a[5]));
+  return s + ".";
+}
+
+}  // namespace
+
+QString adviceText(const Message& m) {
+  if (m.id() == "plan.explain_point") {
+    const QString s = explainPoint(m.args());
+    if (!s.isEmpty()) return s;
+  }
+  if (m.id() == "ballast.band_unreachable") {
+    const QString s = bandUnreachable(m.args());
+    if (!s.isEmpty()) return s;
+  }
+  const auto it = table().find(QString::fromStdString(m.id()));
+  if (it == table().end()) return QString::fromStdString(m.text());
+  return fill(QCoreApplication::translate("Advice", it.value()), m.args());
+}
+
+QStringList adviceIds() {
+  QStringList ids;
+  for (const Advice& a : kAdvice) ids << QString::fromLatin1(a.id);
+  return ids;
+}
+
+QString adviceSource(const QString& id) {
+  const auto it = table().find(id);
+  return it == table().end() ? QString() : QString::fromUtf8(it.value());
+}
+
+}  // namespace auv::ui
