@@ -1,7 +1,8 @@
 #include "widgets/linked_chart_view.h"
 
 #include <QGraphicsLineItem>
-#include <QGraphicsRectItem>
+#include <QGraphicsItem>
+#include <QPainter>
 #include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
 #include <QKeyEvent>
@@ -13,6 +14,34 @@
 #include <cmath>
 
 namespace auv::ui {
+
+// Paints the bands inside the plot area in one go (no pen, translucent
+// green, under the grid), clipped to the area.
+class LinkedChartView::BandsItem : public QGraphicsItem {
+ public:
+  explicit BandsItem(LinkedChartView& view) : view_(view) { setZValue(1.5); }
+  QRectF boundingRect() const override { return area_; }
+  void setArea(const QRectF& a) {
+    if (a == area_) {
+      update();
+      return;
+    }
+    prepareGeometryChange();
+    area_ = a;
+  }
+  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override {
+    p->setPen(Qt::NoPen);
+    p->setBrush(QColor(70, 170, 90, 45));
+    for (const auto& [x0, x1] : view_.bands_) {
+      const double l = std::max(view_.xToPixel(x0), area_.left()), r = std::min(view_.xToPixel(x1), area_.right());
+      if (r > l) p->drawRect(QRectF(l, area_.top(), r - l, area_.height()));
+    }
+  }
+
+ private:
+  LinkedChartView& view_;
+  QRectF area_;
+};
 
 LinkedChartView::LinkedChartView(QChart* chart, QWidget* parent) : QChartView(chart, parent) {
   setFocusPolicy(Qt::StrongFocus);
@@ -32,6 +61,9 @@ LinkedChartView::LinkedChartView(QChart* chart, QWidget* parent) : QChartView(ch
   crosshair_->setZValue(20);
   crosshair_->setVisible(false);
   scene()->addItem(crosshair_);
+  bands_item_ = new BandsItem(*this);
+  bands_item_->setVisible(false);
+  scene()->addItem(bands_item_);
   connect(chart, &QChart::plotAreaChanged, this, [this] { layoutOverlays(); });
   const auto axes = chart->axes(Qt::Horizontal);
   if (auto* x = axes.isEmpty() ? nullptr : qobject_cast<QValueAxis*>(axes.first()))
@@ -45,32 +77,15 @@ double LinkedChartView::xToPixel(double x) const {
 }
 
 void LinkedChartView::setBands(const std::vector<std::pair<double, double>>& bands, bool numbered) {
-  for (Band& b : bands_) {
-    delete b.rect;
-    delete b.label;
-  }
-  bands_.clear();
-  int k = 0;
-  for (const auto& [x0, x1] : bands) {
-    Band b{x0, x1, new QGraphicsRectItem, nullptr};
-    b.rect->setBrush(QColor(70, 170, 90, 45));
-    b.rect->setPen(Qt::NoPen);
-    b.rect->setZValue(1.5);
-    scene()->addItem(b.rect);
-    if (numbered) {
-      b.label = new QGraphicsSimpleTextItem(QString::number(++k));
-      b.label->setBrush(QColor(30, 110, 50));
-      b.label->setZValue(1.6);
-      scene()->addItem(b.label);
-    }
-    bands_.push_back(b);
-  }
+  bands_ = bands;
+  numbered_ = numbered;
   layoutOverlays();
 }
 
 int LinkedChartView::visibleBandCount() const {
   const auto [x0, x1] = xRange();
-  return static_cast<int>(std::count_if(bands_.begin(), bands_.end(), [&](const Band& b) { return b.x1 > x0 && b.x0 < x1; }));
+  return static_cast<int>(
+      std::count_if(bands_.begin(), bands_.end(), [&](const auto& b) { return b.second > x0 && b.first < x1; }));
 }
 
 void LinkedChartView::setCrosshair(std::optional<double> x) {
@@ -82,15 +97,31 @@ void LinkedChartView::layoutOverlays() {
   const QRectF a = chart()->plotArea();
   const auto [x0, x1] = xRange();
   const bool ok = a.width() > 0 && x1 > x0;
-  for (Band& b : bands_) {
-    const double l = std::max(xToPixel(b.x0), a.left()), r = std::min(xToPixel(b.x1), a.right());
-    const bool shown = ok && r > l;
-    b.rect->setVisible(shown);
-    if (b.label) b.label->setVisible(shown && r - l > b.label->boundingRect().width() + 2);
-    if (!shown) continue;
-    b.rect->setRect(QRectF(l, a.top(), r - l, a.height()));
-    if (b.label) b.label->setPos((l + r - b.label->boundingRect().width()) / 2, a.top() + 2);
+  bands_item_->setVisible(ok && !bands_.empty());
+  if (ok) bands_item_->setArea(a);
+  std::size_t used = 0;
+  for (std::size_t k = 0; numbered_ && ok && k < bands_.size(); ++k) {
+    const double l = std::max(xToPixel(bands_[k].first), a.left()), r = std::min(xToPixel(bands_[k].second), a.right());
+    // Numbers take ~8 px a digit: narrower bands (most of a long log at
+    // full view) go without one, as before.
+    if (r - l < 10.0) continue;
+    const QString text = QString::number(k + 1);
+    if (used == labels_.size()) {
+      auto* label = new QGraphicsSimpleTextItem;
+      label->setBrush(QColor(30, 110, 50));
+      label->setZValue(1.6);
+      scene()->addItem(label);
+      labels_.push_back(label);
+    }
+    QGraphicsSimpleTextItem* label = labels_[used];
+    if (label->text() != text) label->setText(text);
+    const double w = label->boundingRect().width();
+    if (r - l <= w + 2) continue;
+    label->setPos((l + r - w) / 2, a.top() + 2);
+    label->setVisible(true);
+    ++used;
   }
+  for (std::size_t k = used; k < labels_.size(); ++k) labels_[k]->setVisible(false);
   const bool cross = ok && crosshair_x_ && *crosshair_x_ >= x0 && *crosshair_x_ <= x1;
   crosshair_->setVisible(cross);
   if (cross) {

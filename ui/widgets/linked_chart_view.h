@@ -54,12 +54,14 @@ class LinkedChartView : public QChartView {
   std::pair<double, double> xRange() const;
   double xToPixel(double x) const;
   void layoutOverlays();
-  struct Band {
-    double x0, x1;
-    QGraphicsRectItem* rect;
-    QGraphicsSimpleTextItem* label;  // nullptr unless numbered
-  };
-  std::vector<Band> bands_;
+  // The bands are painted by one item, and number labels exist only for the
+  // bands wide enough to show one: an 1100 h log has thousands of segments,
+  // and an item each made every zoom step and the first paint cost ~0.5 s.
+  class BandsItem;
+  std::vector<std::pair<double, double>> bands_;
+  bool numbered_ = false;
+  BandsItem* bands_item_ = nullptr;
+  std::vector<QGraphicsSimpleTextItem*> labels_;  // reused; hidden when unused
   QGraphicsLineItem* crosshair_ = nullptr;
   std::optional<double> crosshair_x_;
   bool dragging_ = false;
