@@ -10,7 +10,6 @@
 #include <QScrollArea>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QtCharts/QAreaSeries>
 #include <QtCharts/QChart>
 #include <QtCharts/QLegend>
 #include <QtCharts/QLegendMarker>
@@ -91,21 +90,6 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
     p.y->setTitleText(titles[i]);
     p.chart->addAxis(p.x, Qt::AlignBottom);
     p.chart->addAxis(p.y, Qt::AlignLeft);
-    // Bands first: Qt Charts draws series in the order they were added, and
-    // the lines belong on top of the bands.
-    for (std::size_t s = 0; s < 2; ++s) {
-      Trace& t = p.traces[s];
-      t.lower = new QLineSeries;
-      t.upper = new QLineSeries;
-      t.band = new QAreaSeries(t.upper, t.lower);
-      t.band->setPen(Qt::NoPen);
-      t.band->setBrush(s == 0 ? QColor(31, 119, 180, 70) : QColor(230, 120, 20, 60));
-      p.chart->addSeries(t.band);
-      t.band->attachAxis(p.x);
-      t.band->attachAxis(p.y);
-      t.band->setVisible(false);
-      for (QLegendMarker* m : p.chart->legend()->markers(t.band)) m->setVisible(false);
-    }
     for (std::size_t s = 0; s < 2; ++s) {
       auto* series = new QLineSeries;
       series->setName(s == 0 ? tr("measured") : tr("commanded"));
@@ -292,7 +276,6 @@ void DeviationPlotsPage::showTraces(std::array<std::array<PlotTrace, 2>, 3> trac
       t.data = std::move(traces[i][s]);
       n += t.data.v.size();
       t.series->setVisible(t.data.channel != nullptr);
-      if (!t.data.channel) t.band->setVisible(false);
       if (!t.data.channel && kChannels[i][s]) missing << kChannels[i][s];
     }
     p.traces[1].series->setName(kChannels[i][1] ? tr("commanded") : QString());
@@ -378,14 +361,15 @@ std::pair<double, double> DeviationPlotsPage::xRange(int plot) const {
   return {x->min(), x->max()};
 }
 
-void DeviationPlotsPage::showTrace(Trace& t, double x0, double x1, std::size_t buckets, double& lo, double& hi) {
-  const Envelope e = decimateEnvelope(t.data.t_min, t.data.v, t.data.pyramid, x0, x1, buckets);
+void DeviationPlotsPage::showTrace(PlotData& p, std::size_t s, std::size_t buckets, double& lo, double& hi) {
+  Trace& t = p.traces[s];
+  const Envelope e = decimateEnvelope(t.data.t_min, t.data.v, t.data.pyramid, x0_, x1_, buckets);
   const auto toList = [&](const std::vector<PlotPoint>& pts) {
     QList<QPointF> list;
     list.reserve(static_cast<qsizetype>(pts.size()));
     for (const auto& pt : pts) {
       list.append(QPointF(pt.x, pt.y));
-      if (pt.x >= x0 && pt.x <= x1) {
+      if (pt.x >= x0_ && pt.x <= x1_) {
         lo = std::min(lo, pt.y);
         hi = std::max(hi, pt.y);
       }
@@ -393,9 +377,10 @@ void DeviationPlotsPage::showTrace(Trace& t, double x0, double x1, std::size_t b
     return list;
   };
   t.series->replace(toList(e.line));
-  t.lower->replace(toList(e.lower));
-  t.upper->replace(toList(e.upper));
-  t.band->setVisible(e.dense && t.data.channel);
+  // The band in the line's colour, light: the level (mean line) stays readable on it.
+  QColor band = t.series->pen().color();
+  band.setAlpha(s == 0 ? 70 : 60);
+  p.view->setEnvelope(static_cast<int>(s), toList(e.lower), toList(e.upper), band);
 }
 
 void DeviationPlotsPage::redecimate() {
@@ -404,7 +389,7 @@ void DeviationPlotsPage::redecimate() {
     const std::size_t buckets = static_cast<std::size_t>(std::max(width, 200));
     p.buckets = width;
     double lo = INFINITY, hi = -INFINITY;
-    for (auto& tr : p.traces) showTrace(tr, x0_, x1_, buckets, lo, hi);
+    for (std::size_t s = 0; s < p.traces.size(); ++s) showTrace(p, s, buckets, lo, hi);
     // Y follows what is visible, on round ticks.
     if (std::isfinite(lo) && std::isfinite(hi)) {
       // Surface noise just above 0 m must not add a whole tick of air.
@@ -458,10 +443,8 @@ const QLineSeries* DeviationPlotsPage::line(int plot, int s) const {
   return plots_[static_cast<std::size_t>(plot)].traces[static_cast<std::size_t>(s)].series;
 }
 
-const QLineSeries* DeviationPlotsPage::bandEdge(int plot, int s, bool upper) const {
-  const Trace& t = plots_[static_cast<std::size_t>(plot)].traces[static_cast<std::size_t>(s)];
-  if (!t.band->isVisible()) return nullptr;
-  return upper ? t.upper : t.lower;
+const QList<QPointF>& DeviationPlotsPage::bandEdge(int plot, int s, bool upper) const {
+  return view(plot)->envelopeEdge(s, upper);
 }
 
 bool DeviationPlotsPage::exportPng(const QString& path) {

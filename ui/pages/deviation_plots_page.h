@@ -13,7 +13,6 @@
 class QLabel;
 class QPushButton;
 QT_BEGIN_NAMESPACE
-class QAreaSeries;
 class QChart;
 class QLineSeries;
 class QValueAxis;
@@ -63,9 +62,9 @@ class DeviationPlotsPage : public QWizardPage {
   int pointsDrawn(int plot, int s) const;
   // Samples of that series in the log.
   std::size_t samples(int plot, int s) const;
-  // The series drawn as a band (dense columns): its lower or upper edge
-  // (each column's min or max), nullptr while drawn as a line.
-  const QLineSeries* bandEdge(int plot, int s, bool upper) const;
+  // The series' envelope (dense columns): its lower or upper edge, each
+  // column's min or max; empty while the series is drawn as a line.
+  const QList<QPointF>& bandEdge(int plot, int s, bool upper) const;
   // The series' line: the samples, or the column means inside the band.
   const QLineSeries* line(int plot, int s) const;
   // Operating segments shaded on a chart.
@@ -89,9 +88,6 @@ class DeviationPlotsPage : public QWizardPage {
   struct Trace {
     PlotTrace data;
     QLineSeries* series = nullptr;  // the samples, or the column means inside the band
-    QLineSeries* lower = nullptr;   // owned by the band
-    QLineSeries* upper = nullptr;
-    QAreaSeries* band = nullptr;
   };
   struct PlotData {
     QChart* chart = nullptr;
@@ -104,7 +100,7 @@ class DeviationPlotsPage : public QWizardPage {
   };
   void startWork();
   void showTraces(std::array<std::array<PlotTrace, 2>, 3> traces);
-  void showTrace(Trace& t, double x0, double x1, std::size_t buckets, double& lo, double& hi);
+  void showTrace(PlotData& p, std::size_t s, std::size_t buckets, double& lo, double& hi);
   void redecimate();
   void alignPlotAreas();
   void showAnalysis();

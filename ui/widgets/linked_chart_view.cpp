@@ -43,6 +43,59 @@ class LinkedChartView::BandsItem : public QGraphicsItem {
   QRectF area_;
 };
 
+// One series' min/max envelope: a bar per column, clipped to the plot area.
+class LinkedChartView::EnvelopeItem : public QGraphicsItem {
+ public:
+  explicit EnvelopeItem(QChart& chart) : chart_(chart) { setZValue(1.7); }
+  QRectF boundingRect() const override { return area_; }
+  void set(QList<QPointF> lower, QList<QPointF> upper, const QColor& color) {
+    lower_ = std::move(lower);
+    upper_ = std::move(upper);
+    color_ = color;
+    setVisible(!lower_.isEmpty() && lower_.size() == upper_.size());
+    update();
+  }
+  void setArea(const QRectF& a) {
+    if (a == area_) {
+      update();
+      return;
+    }
+    prepareGeometryChange();
+    area_ = a;
+  }
+  const QList<QPointF>& lower() const { return lower_; }
+  const QList<QPointF>& upper() const { return upper_; }
+  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override {
+    if (lower_.isEmpty()) return;
+    p->setClipRect(area_);
+    // Column k spans from half-way to its left neighbour to half-way to its
+    // right one, on whole pixels: neither gaps nor doubly shaded stripes.
+    const qsizetype n = lower_.size();
+    std::vector<double> x(static_cast<std::size_t>(n));
+    for (qsizetype k = 0; k < n; ++k)
+      x[static_cast<std::size_t>(k)] = chart_.mapToPosition(QPointF((lower_[k].x() + upper_[k].x()) / 2.0, 0.0)).x();
+    const auto edge = [&](qsizetype k) {  // left edge of column k
+      const auto i = static_cast<std::size_t>(k);
+      if (k == 0) return std::floor(x[0] - 0.5);
+      if (k == n) return std::floor(x[i - 1] + 0.5) + 1.0;
+      return std::floor((x[i - 1] + x[i]) / 2.0);
+    };
+    for (qsizetype k = 0; k < n; ++k) {
+      const double y0 = chart_.mapToPosition(QPointF(0.0, lower_[k].y())).y();
+      const double y1 = chart_.mapToPosition(QPointF(0.0, upper_[k].y())).y();
+      const double l = edge(k), r = std::max(edge(k + 1), l + 1.0);
+      const double top = std::floor(std::min(y0, y1)), bottom = std::ceil(std::max(y0, y1));
+      p->fillRect(QRectF(l, top, r - l, std::max(1.0, bottom - top)), color_);
+    }
+  }
+
+ private:
+  QChart& chart_;
+  QRectF area_;
+  QList<QPointF> lower_, upper_;
+  QColor color_;
+};
+
 LinkedChartView::LinkedChartView(QChart* chart, QWidget* parent) : QChartView(chart, parent) {
   setFocusPolicy(Qt::StrongFocus);
   // No anti-aliasing: with ~2 points per pixel column it hardly shows, and
@@ -61,6 +114,11 @@ LinkedChartView::LinkedChartView(QChart* chart, QWidget* parent) : QChartView(ch
   crosshair_->setZValue(20);
   crosshair_->setVisible(false);
   scene()->addItem(crosshair_);
+  for (auto*& e : envelopes_) {
+    e = new EnvelopeItem(*chart);
+    e->setVisible(false);
+    scene()->addItem(e);
+  }
   bands_item_ = new BandsItem(*this);
   bands_item_->setVisible(false);
   scene()->addItem(bands_item_);
@@ -68,6 +126,9 @@ LinkedChartView::LinkedChartView(QChart* chart, QWidget* parent) : QChartView(ch
   const auto axes = chart->axes(Qt::Horizontal);
   if (auto* x = axes.isEmpty() ? nullptr : qobject_cast<QValueAxis*>(axes.first()))
     connect(x, &QValueAxis::rangeChanged, this, [this] { layoutOverlays(); });
+  const auto ys = chart->axes(Qt::Vertical);
+  if (auto* y = ys.isEmpty() ? nullptr : qobject_cast<QValueAxis*>(ys.first()))
+    connect(y, &QValueAxis::rangeChanged, this, [this] { layoutOverlays(); });
 }
 
 double LinkedChartView::xToPixel(double x) const {
@@ -80,6 +141,17 @@ void LinkedChartView::setBands(const std::vector<std::pair<double, double>>& ban
   bands_ = bands;
   numbered_ = numbered;
   layoutOverlays();
+}
+
+void LinkedChartView::setEnvelope(int slot, QList<QPointF> lower, QList<QPointF> upper, const QColor& color) {
+  EnvelopeItem* e = envelopes_[static_cast<std::size_t>(slot)];
+  e->set(std::move(lower), std::move(upper), color);
+  e->setArea(chart()->plotArea());
+}
+
+const QList<QPointF>& LinkedChartView::envelopeEdge(int slot, bool upper) const {
+  const EnvelopeItem* e = envelopes_[static_cast<std::size_t>(slot)];
+  return upper ? e->upper() : e->lower();
 }
 
 int LinkedChartView::visibleBandCount() const {
@@ -97,6 +169,7 @@ void LinkedChartView::layoutOverlays() {
   const QRectF a = chart()->plotArea();
   const auto [x0, x1] = xRange();
   const bool ok = a.width() > 0 && x1 > x0;
+  for (EnvelopeItem* e : envelopes_) e->setArea(a);
   bands_item_->setVisible(ok && !bands_.empty());
   if (ok) bands_item_->setArea(a);
   std::size_t used = 0;
