@@ -151,8 +151,8 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
                           "as a mission-log CSV (not the thinned-out points drawn)."));
   status_ = makeErrorLabel("export_status");
   busy_ = new BusyIndicator;
+  busy_->follow(&plots_task_);  // first: the pool prepares the plots first
   busy_->follow(&analysis_task_);
-  busy_->follow(&plots_task_);
   connect(busy_, &BusyIndicator::busyChanged, this, [this] { emit completeChanged(); });
 
   auto* body = new QHBoxLayout;
@@ -231,7 +231,7 @@ void DeviationPlotsPage::startWork() {
     showSegments();
     return;
   }
-  summary_.show(nullptr, state_.isGlider(), QString());
+  summary_.showPending(tr("Net buoyancy: being computed…"));
   segments_.show(nullptr, state_.isGlider());
   if (!state_.vehicle) {
     BackgroundTask::settle({&plots_task_});

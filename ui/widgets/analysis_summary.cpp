@@ -59,6 +59,15 @@ AnalysisSummary::AnalysisSummary() {
   notes_->setTextInteractionFlags(Qt::TextSelectableByMouse);
 }
 
+void AnalysisSummary::showPending(const QString& note) {
+  net_->setStyleSheet(QString());
+  net_->setText(note);
+  cg_->clear();
+  errors_->clear();
+  water_->clear();
+  notes_->clear();
+}
+
 void AnalysisSummary::show(const analysis::AnalysisReport* report, bool glider, const QString& error) {
   if (!report) {
     net_->setText(tr("<b>No analysis</b>: %1").arg(error.toHtmlEscaped()));

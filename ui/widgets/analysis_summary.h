@@ -27,6 +27,8 @@ class AnalysisSummary {
   // `report` null: says `error` in red instead. A glider's net buoyancy is
   // shown to the gram and gets the whole width.
   void show(const analysis::AnalysisReport* report, bool glider, const QString& error);
+  // No result yet (the analysis is running): `note` in plain words.
+  void showPending(const QString& note);
 
  private:
   QGridLayout* grid_;

@@ -3,6 +3,7 @@
 #include <QGraphicsLineItem>
 #include <QGraphicsItem>
 #include <QPainter>
+#include <QPolygonF>
 #include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
 #include <QKeyEvent>
@@ -80,13 +81,41 @@ class LinkedChartView::EnvelopeItem : public QGraphicsItem {
       if (k == n) return std::floor(x[i - 1] + 0.5) + 1.0;
       return std::floor((x[i - 1] + x[i]) / 2.0);
     };
+    // Columns that start on the same pixel are merged (their extremes
+    // joined), so no pixel is shaded twice and no extreme is lost.
+    struct Bar {
+      double l, r, top, bottom;
+    };
+    std::vector<Bar> bars;
+    bars.reserve(static_cast<std::size_t>(n));
     for (qsizetype k = 0; k < n; ++k) {
       const double y0 = chart_.mapToPosition(QPointF(0.0, lower_[k].y())).y();
       const double y1 = chart_.mapToPosition(QPointF(0.0, upper_[k].y())).y();
       const double l = edge(k), r = std::max(edge(k + 1), l + 1.0);
-      const double top = std::floor(std::min(y0, y1)), bottom = std::ceil(std::max(y0, y1));
-      p->fillRect(QRectF(l, top, r - l, std::max(1.0, bottom - top)), color_);
+      const double top = std::floor(std::min(y0, y1)), bottom = std::max(std::ceil(std::max(y0, y1)), top + 1.0);
+      if (!bars.empty() && l <= bars.back().l) {
+        Bar& b = bars.back();
+        b.r = std::max(b.r, r);
+        b.top = std::min(b.top, top);
+        b.bottom = std::max(b.bottom, bottom);
+        continue;
+      }
+      if (!bars.empty()) bars.back().r = std::min(bars.back().r, l);
+      bars.push_back({l, r, top, bottom});
     }
+    for (const Bar& b : bars) p->fillRect(QRectF(b.l, b.top, b.r - b.l, b.bottom - b.top), color_);
+    // The envelope's edges in a stronger tone: a one-sample spike is a
+    // 1 px bar, too faint alone.
+    QPolygonF top, bottom;
+    for (const Bar& b : bars) {
+      top << QPointF(b.l + 0.5, b.top + 0.5);
+      bottom << QPointF(b.l + 0.5, b.bottom - 0.5);
+    }
+    QColor edge_color = color_;
+    edge_color.setAlpha(std::min(255, color_.alpha() * 2 + 40));
+    p->setPen(QPen(edge_color, 1.0));
+    p->drawPolyline(top);
+    p->drawPolyline(bottom);
   }
 
  private:
