@@ -19,6 +19,7 @@
 
 #include "wizard/pinned_fonts.h"
 
+#include "wizard/background_task.h"
 #include "wizard/operator_wizard.h"
 
 int main(int argc, char** argv) {
@@ -48,6 +49,11 @@ int main(int argc, char** argv) {
   // (what the tests before these questions did), and tests that check a
   // question set their own asker.
   auv::ui::OperatorWizard::setDefaultAsker([](const QString&, const QString&, bool) { return true; });
+  // A page's background work (analysis, plots) on the small test logs lands
+  // before the page shows, whatever the machine's load, so tests and goldens
+  // see whole pages; tests of the busy state (big_log_test) use the
+  // product's grace.
+  auv::ui::BackgroundTask::setGraceMs(60000);
   ::testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }

@@ -20,9 +20,10 @@
 
 #include "analysis/mission_analysis.h"
 #include "common/input_error.h"
-#include "plot/min_max_decimation.h"
+#include "plot/envelope_decimation.h"
 #include "plot/nice_axis.h"
 #include "plot/plotted_window_csv.h"
+#include "widgets/busy_indicator.h"
 #include "widgets/estimate_text.h"
 #include "widgets/export_file_dialog.h"
 #include "widgets/inputs.h"
@@ -151,6 +152,10 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
                        tr("Save every logged sample of the plotted channels within the visible time window "
                           "as a mission-log CSV (not the thinned-out points drawn)."));
   status_ = makeErrorLabel("export_status");
+  busy_ = new BusyIndicator;
+  busy_->follow(&plots_task_);  // first: the pool prepares the plots first
+  busy_->follow(&analysis_task_);
+  connect(busy_, &BusyIndicator::busyChanged, this, [this] { emit completeChanged(); });
 
   auto* body = new QHBoxLayout;
   body->addWidget(charts_, 1);
@@ -162,6 +167,7 @@ DeviationPlotsPage::DeviationPlotsPage(WizardState& state) : state_(state) {
   row->addWidget(export_csv_);
   auto* lay = new QVBoxLayout(this);
   lay->setSpacing(4);
+  lay->addWidget(busy_);
   lay->addLayout(summary_.grid());
   lay->addLayout(body, 1);
   lay->addLayout(row);
@@ -190,82 +196,127 @@ void DeviationPlotsPage::showEvent(QShowEvent* e) {
 
 int DeviationPlotsPage::nextId() const { return OperatorWizard::kModelCheck; }
 
-void DeviationPlotsPage::buildPlot(PlotData& p, const char* measured, const char* commanded) {
-  const MissionLog& log = *state_.log;
-  const char* names[2] = {measured, commanded};
-  QStringList missing;
-  for (std::size_t s = 0; s < 2; ++s) {
-    Trace& tr = p.traces[s];
-    tr.t_min.clear();
-    tr.v.clear();
-    tr.channel = nullptr;
-    if (!names[s] || !log.has(names[s])) {
-      if (names[s]) {
-        const QString n = QString::fromLatin1(names[s]);
-        missing << (n == "depth_cmd" ? DeviationPlotsPage::tr("commanded depth") : n == "pitch_cmd" ? DeviationPlotsPage::tr("commanded pitch") : DeviationPlotsPage::tr(names[s]));
-      }
-      tr.series->setVisible(false);
-      continue;
-    }
-    tr.channel = names[s];
-    const TimeSeries ts = log.series(names[s]);
-    tr.t_min.resize(ts.t.size());
-    std::transform(ts.t.begin(), ts.t.end(), tr.t_min.begin(), [](double t) { return t / 60.0; });
-    tr.v = ts.v;
-    tr.series->setVisible(true);
-  }
-  p.traces[1].series->setName(commanded ? tr("commanded") : QString());
-  if (!commanded) p.traces[1].series->setVisible(false);
-  for (QLegendMarker* m : p.chart->legend()->markers(p.traces[1].series)) m->setVisible(p.traces[1].series->isVisible());
-  p.chart->setTitle(missing.isEmpty() ? QString() : tr("not in this log: %1").arg(missing.join(", ")));
+bool DeviationPlotsPage::busy() const { return busy_->busy(); }
+
+bool DeviationPlotsPage::isComplete() const { return !busy(); }
+
+void DeviationPlotsPage::finishWork() {
+  analysis_task_.finishNow();
+  plots_task_.finishNow();
+}
+
+bool DeviationPlotsPage::validatePage() {
+  // A resumed session or a test may press Next before the workers end.
+  finishWork();
+  return true;
 }
 
 void DeviationPlotsPage::initializePage() {
   status_->clear();
   if (!state_.log) return;
-  runAnalysis();
-  buildPlot(plots_[kDepth], "depth", "depth_cmd");
-  buildPlot(plots_[kPitch], "pitch", "pitch_cmd");
-  buildPlot(plots_[kRoll], "roll", nullptr);
+  startWork();
+}
+
+namespace {
+// The measured and commanded channel of each chart.
+constexpr const char* kChannels[3][2] = {{"depth", "depth_cmd"}, {"pitch", "pitch_cmd"}, {"roll", nullptr}};
+
+// A channel the log lacks, in the words of the page (no channel ids).
+QString channelWords(const char* name) {
+  const QString n = QString::fromLatin1(name);
+  if (n == "depth_cmd") return DeviationPlotsPage::tr("commanded depth");
+  if (n == "pitch_cmd") return DeviationPlotsPage::tr("commanded pitch");
+  return DeviationPlotsPage::tr(name);
+}
+}  // namespace
+
+void DeviationPlotsPage::startWork() {
+  const std::shared_ptr<const MissionLog> log = state_.log;
+  // The plots first (quick), so the technician sees the log while the
+  // analysis runs; each result is dropped if another log came meanwhile.
+  plots_task_.start(tr("Preparing the plots of %1 rows…").arg(log->rowCount()), [this, log]() -> BackgroundTask::Apply {
+    auto traces = std::make_shared<std::array<std::array<PlotTrace, 2>, 3>>();
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t k = 0; k < 2; ++k) (*traces)[i][k] = preparePlotTrace(*log, kChannels[i][k]);
+    return [this, log, traces] {
+      if (state_.log == log) showTraces(std::move(*traces));
+    };
+  });
+  analysis_error_.clear();
+  if (state_.analysis) {
+    BackgroundTask::settle({&plots_task_});
+    showAnalysis();
+    showSegments();
+    return;
+  }
+  summary_.showPending(tr("Net buoyancy: being computed…"));
+  segments_.show(nullptr, state_.isGlider());
+  if (!state_.vehicle) {
+    BackgroundTask::settle({&plots_task_});
+    analysis_error_ = q(InputError("vehicle", "no vehicle chosen", "go back to the vehicle page").what());
+    showAnalysis();
+    return;
+  }
+  analysis::AnalysisOptions o;
+  o.log_name = QFileInfo(q(state_.log_file)).fileName().toStdString();
+  // The import page entered one value per point (AUVs); a glider's fit has no use for it.
+  if (!state_.isGlider() && state_.mission_installed_kg.size() == state_.vehicle->points.size())
+    o.installed_kg = state_.mission_installed_kg;
+  // BG from the configuration (roll test): CG y and roll become identifiable.
+  if (state_.bg_mm && !state_.isGlider()) o.bg_m = *state_.bg_mm / 1000.0;
+  analysis_task_.start(
+      tr("Analysing the log: steady segments, depth, pitch and roll errors, net buoyancy and centre of gravity…"),
+      [this, log, vehicle = *state_.vehicle, o]() -> BackgroundTask::Apply {
+        auto result = std::make_shared<std::optional<analysis::AnalysisReport>>();
+        QString error;
+        try {
+          *result = analysis::analyzeMission(*log, vehicle, o);
+        } catch (const std::exception& e) {
+          error = q(e.what());
+        }
+        return [this, log, result, error] {
+          if (state_.log != log) return;
+          analysis_error_ = error;
+          if (*result) state_.analysis = std::move(**result);
+          showAnalysis();
+          showSegments();
+        };
+      });
+  BackgroundTask::settle({&plots_task_, &analysis_task_});
+}
+
+void DeviationPlotsPage::showTraces(std::array<std::array<PlotTrace, 2>, 3> traces) {
+  bool any_command = false;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < plots_.size(); ++i) {
+    PlotData& p = plots_[i];
+    QStringList missing;
+    for (std::size_t s = 0; s < 2; ++s) {
+      Trace& t = p.traces[s];
+      t.data = std::move(traces[i][s]);
+      n += t.data.v.size();
+      t.series->setVisible(t.data.channel != nullptr);
+      if (!t.data.channel && kChannels[i][s]) missing << channelWords(kChannels[i][s]);
+    }
+    p.traces[1].series->setName(kChannels[i][1] ? tr("commanded") : QString());
+    for (QLegendMarker* m : p.chart->legend()->markers(p.traces[1].series)) m->setVisible(p.traces[1].series->isVisible());
+    p.chart->setTitle(missing.isEmpty() ? QString() : tr("not in this log: %1").arg(missing.join(", ")));
+    any_command = any_command || p.traces[1].series->isVisible();
+  }
   // The legend only tells measured from commanded: without any command it
   // would take a line of the depth chart to name one colour.
-  bool any_command = false;
-  for (const auto& p : plots_) any_command = any_command || p.traces[1].series->isVisible();
   plots_[kDepth].chart->legend()->setVisible(any_command);
   const MissionLog& log = *state_.log;
   t_min_ = log.time.empty() ? 0.0 : log.time.front() / 60.0;
   t_max_ = log.time.empty() ? 1.0 : log.time.back() / 60.0;
   if (t_max_ <= t_min_) t_max_ = t_min_ + 1.0;
-  std::size_t n = 0;
-  for (const auto& p : plots_)
-    for (const auto& t : p.traces) n += t.v.size();
   info_->setText(tr("%1: %2 samples in the three charts over %3 min.")
                      .arg(QString::fromStdString(state_.log_file).section('/', -1))
                      .arg(n)
                      .arg(t_max_ - t_min_, 0, 'f', 0));
-  showAnalysis();
-  showSegments();
   cross_.reset();
   setCrosshair(std::nullopt);
   resetXRange();
-}
-
-void DeviationPlotsPage::runAnalysis() {
-  analysis_error_.clear();
-  if (state_.analysis) return;
-  try {
-    if (!state_.vehicle) throw InputError("vehicle", "no vehicle chosen", "go back to the vehicle page");
-    analysis::AnalysisOptions o;
-    o.log_name = QFileInfo(q(state_.log_file)).fileName().toStdString();
-    // The import page entered one value per point (AUVs); a glider's fit has no use for it.
-    if (!state_.isGlider() && state_.mission_installed_kg.size() == state_.vehicle->points.size())
-      o.installed_kg = state_.mission_installed_kg;
-    // BG from the configuration (roll test): CG y and roll become identifiable.
-    if (state_.bg_mm && !state_.isGlider()) o.bg_m = *state_.bg_mm / 1000.0;
-    state_.analysis = analysis::analyzeMission(*state_.log, *state_.vehicle, o);
-  } catch (const std::exception& e) {
-    analysis_error_ = q(e.what());
-  }
 }
 
 void DeviationPlotsPage::showAnalysis() {
@@ -298,7 +349,7 @@ void DeviationPlotsPage::setCrosshair(std::optional<double> x) {
   }
   const auto value = [&](int plot, int s, const QString& unit) -> QString {
     const Trace& t = plots_[static_cast<std::size_t>(plot)].traces[static_cast<std::size_t>(s)];
-    const double v = nearest(t.t_min, t.v, *x);
+    const double v = nearest(t.data.t_min, t.data.v, *x);
     return std::isfinite(v) ? fixed(v, 2) + unit : QString();
   };
   QStringList parts;
@@ -340,25 +391,35 @@ std::pair<double, double> DeviationPlotsPage::xRange(int plot) const {
   return {x->min(), x->max()};
 }
 
+void DeviationPlotsPage::showTrace(PlotData& p, std::size_t s, std::size_t buckets, double& lo, double& hi) {
+  Trace& t = p.traces[s];
+  const Envelope e = decimateEnvelope(t.data.t_min, t.data.v, t.data.pyramid, x0_, x1_, buckets);
+  const auto toList = [&](const std::vector<PlotPoint>& pts) {
+    QList<QPointF> list;
+    list.reserve(static_cast<qsizetype>(pts.size()));
+    for (const auto& pt : pts) {
+      list.append(QPointF(pt.x, pt.y));
+      if (pt.x >= x0_ && pt.x <= x1_) {
+        lo = std::min(lo, pt.y);
+        hi = std::max(hi, pt.y);
+      }
+    }
+    return list;
+  };
+  t.series->replace(toList(e.line));
+  // The band in the line's colour, light: the level (mean line) stays readable on it.
+  QColor band = t.series->pen().color();
+  band.setAlpha(s == 0 ? 70 : 60);
+  p.view->setEnvelope(static_cast<int>(s), toList(e.lower), toList(e.upper), band);
+}
+
 void DeviationPlotsPage::redecimate() {
   for (auto& p : plots_) {
     const int width = static_cast<int>(p.chart->plotArea().width());
     const std::size_t buckets = static_cast<std::size_t>(std::max(width, 200));
     p.buckets = width;
     double lo = INFINITY, hi = -INFINITY;
-    for (auto& tr : p.traces) {
-      const auto pts = decimateMinMax(tr.t_min, tr.v, x0_, x1_, buckets);
-      QList<QPointF> list;
-      list.reserve(static_cast<qsizetype>(pts.size()));
-      for (const auto& pt : pts) {
-        list.append(QPointF(pt.x, pt.y));
-        if (pt.x >= x0_ && pt.x <= x1_) {
-          lo = std::min(lo, pt.y);
-          hi = std::max(hi, pt.y);
-        }
-      }
-      tr.series->replace(list);
-    }
+    for (std::size_t s = 0; s < p.traces.size(); ++s) showTrace(p, s, buckets, lo, hi);
     // Y follows what is visible, on round ticks.
     if (std::isfinite(lo) && std::isfinite(hi)) {
       // Surface noise just above 0 m must not add a whole tick of air.
@@ -405,7 +466,15 @@ int DeviationPlotsPage::pointsDrawn(int plot, int s) const {
 }
 
 std::size_t DeviationPlotsPage::samples(int plot, int s) const {
-  return plots_[static_cast<std::size_t>(plot)].traces[static_cast<std::size_t>(s)].v.size();
+  return plots_[static_cast<std::size_t>(plot)].traces[static_cast<std::size_t>(s)].data.v.size();
+}
+
+const QLineSeries* DeviationPlotsPage::line(int plot, int s) const {
+  return plots_[static_cast<std::size_t>(plot)].traces[static_cast<std::size_t>(s)].series;
+}
+
+const QList<QPointF>& DeviationPlotsPage::bandEdge(int plot, int s, bool upper) const {
+  return view(plot)->envelopeEdge(s, upper);
 }
 
 bool DeviationPlotsPage::exportPng(const QString& path) {
@@ -424,7 +493,7 @@ long DeviationPlotsPage::exportCsv(const QString& path) {
   std::vector<const LogChannel*> channels;
   for (const auto& p : plots_)
     for (const auto& t : p.traces)
-      if (t.channel) channels.push_back(&log.channel(t.channel));
+      if (t.data.channel) channels.push_back(&log.channel(t.data.channel));
   try {
     return writePlottedWindowCsv(log, channels, x0_, x1_, QFileInfo(q(state_.log_file)).fileName(), path);
   } catch (const InputError& e) {

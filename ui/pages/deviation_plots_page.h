@@ -4,8 +4,10 @@
 #include <optional>
 #include <vector>
 
+#include "plot/plot_trace.h"
 #include "widgets/analysis_summary.h"
 #include "widgets/segment_table.h"
+#include "wizard/background_task.h"
 #include "wizard/wizard_state.h"
 
 class QLabel;
@@ -18,6 +20,7 @@ QT_END_NAMESPACE
 
 namespace auv::ui {
 
+class BusyIndicator;
 class LinkedChartView;
 
 // Post mission, step 2: the analysis of the imported log (core/analysis:
@@ -28,20 +31,31 @@ class LinkedChartView;
 // with their own errors. The charts share the time axis: zoom or pan one and
 // the others follow; a crosshair reads time and values across all three.
 // Each series holds at most two points per pixel column over the visible
-// range (plot/min_max_decimation.h), so a 24 h 10 Hz log stays fluid. The
-// charts export as PNG and the visible time window as CSV (every sample).
+// range (plot/envelope_decimation.h), drawn as a min/max band with the mean
+// where the columns are dense, so a 1100 h log stays fluid and readable. The
+// analysis and the plot preparation run in worker threads (a busy indicator
+// says which; Next waits for them). The charts export as PNG and the
+// visible time window as CSV (every sample).
 class DeviationPlotsPage : public QWizardPage {
   Q_OBJECT
  public:
   enum Plot { kDepth = 0, kPitch, kRoll };
   explicit DeviationPlotsPage(WizardState& state);
   void initializePage() override;
+  bool isComplete() const override;
+  bool validatePage() override;
 
  protected:
   void showEvent(QShowEvent* e) override;
 
  public:
   int nextId() const override;
+
+  // The analysis or the plot preparation is running in a worker.
+  bool busy() const;
+  const BusyIndicator& busyIndicator() const { return *busy_; }
+  // Applies the workers' results now (waiting for them).
+  void finishWork();
 
   // Visible time range in minutes since the log start, applied to all charts.
   void setXRange(double x0_min, double x1_min);
@@ -53,6 +67,11 @@ class DeviationPlotsPage : public QWizardPage {
   int pointsDrawn(int plot, int s) const;
   // Samples of that series in the log.
   std::size_t samples(int plot, int s) const;
+  // The series' envelope (dense columns): its lower or upper edge, each
+  // column's min or max; empty while the series is drawn as a line.
+  const QList<QPointF>& bandEdge(int plot, int s, bool upper) const;
+  // The series' line: the samples, or the column means inside the band.
+  const QLineSeries* line(int plot, int s) const;
   // Operating segments shaded on a chart.
   int shadedSegments(int plot) const;
 
@@ -72,10 +91,8 @@ class DeviationPlotsPage : public QWizardPage {
 
  private:
   struct Trace {
-    std::vector<double> t_min;  // minutes
-    std::vector<double> v;
-    QLineSeries* series = nullptr;
-    const char* channel = nullptr;
+    PlotTrace data;
+    QLineSeries* series = nullptr;  // the samples, or the column means inside the band
   };
   struct PlotData {
     QChart* chart = nullptr;
@@ -86,10 +103,11 @@ class DeviationPlotsPage : public QWizardPage {
     QString title;
     int buckets = 0;  // plot width the series were decimated for
   };
-  void buildPlot(PlotData& p, const char* measured, const char* commanded);
+  void startWork();
+  void showTraces(std::array<std::array<PlotTrace, 2>, 3> traces);
+  void showTrace(PlotData& p, std::size_t s, std::size_t buckets, double& lo, double& hi);
   void redecimate();
   void alignPlotAreas();
-  void runAnalysis();
   void showAnalysis();
   void showSegments();
   void exportPngDialog();
@@ -109,6 +127,9 @@ class DeviationPlotsPage : public QWizardPage {
   QPushButton* reset_;
   QPushButton* export_png_;
   QPushButton* export_csv_;
+  BusyIndicator* busy_;
+  BackgroundTask analysis_task_;
+  BackgroundTask plots_task_;
 };
 
 }  // namespace auv::ui

@@ -62,6 +62,17 @@ AnalysisSummary::AnalysisSummary() {
   notes_->setTextInteractionFlags(Qt::TextSelectableByMouse);
 }
 
+void AnalysisSummary::showPending(const QString& note) {
+  source_->clear();
+  source_->setVisible(false);
+  net_->setStyleSheet(QString());
+  net_->setText(note);
+  cg_->clear();
+  errors_->clear();
+  water_->clear();
+  notes_->clear();
+}
+
 void AnalysisSummary::show(const analysis::AnalysisReport* report, bool glider, const QString& error,
                            const QString& source) {
   source_->setText(report ? source : QString());

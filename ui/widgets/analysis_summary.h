@@ -30,6 +30,8 @@ class AnalysisSummary {
   // reads "not known", never ± 0.
   void show(const analysis::AnalysisReport* report, bool glider, const QString& error,
             const QString& source = QString());
+  // No result yet (the analysis is running): `note` in plain words.
+  void showPending(const QString& note);
 
  private:
   QGridLayout* grid_;

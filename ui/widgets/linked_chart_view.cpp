@@ -1,7 +1,9 @@
 #include "widgets/linked_chart_view.h"
 
 #include <QGraphicsLineItem>
-#include <QGraphicsRectItem>
+#include <QGraphicsItem>
+#include <QPainter>
+#include <QPolygonF>
 #include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
 #include <QKeyEvent>
@@ -13,6 +15,115 @@
 #include <cmath>
 
 namespace auv::ui {
+
+// Paints the bands inside the plot area in one go (no pen, translucent
+// green, under the grid), clipped to the area.
+class LinkedChartView::BandsItem : public QGraphicsItem {
+ public:
+  explicit BandsItem(LinkedChartView& view) : view_(view) { setZValue(1.5); }
+  QRectF boundingRect() const override { return area_; }
+  void setArea(const QRectF& a) {
+    if (a == area_) {
+      update();
+      return;
+    }
+    prepareGeometryChange();
+    area_ = a;
+  }
+  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override {
+    p->setPen(Qt::NoPen);
+    p->setBrush(QColor(70, 170, 90, 45));
+    for (const auto& [x0, x1] : view_.bands_) {
+      const double l = std::max(view_.xToPixel(x0), area_.left()), r = std::min(view_.xToPixel(x1), area_.right());
+      if (r > l) p->drawRect(QRectF(l, area_.top(), r - l, area_.height()));
+    }
+  }
+
+ private:
+  LinkedChartView& view_;
+  QRectF area_;
+};
+
+// One series' min/max envelope: a bar per column, clipped to the plot area.
+class LinkedChartView::EnvelopeItem : public QGraphicsItem {
+ public:
+  explicit EnvelopeItem(QChart& chart) : chart_(chart) { setZValue(1.7); }
+  QRectF boundingRect() const override { return area_; }
+  void set(QList<QPointF> lower, QList<QPointF> upper, const QColor& color) {
+    lower_ = std::move(lower);
+    upper_ = std::move(upper);
+    color_ = color;
+    setVisible(!lower_.isEmpty() && lower_.size() == upper_.size());
+    update();
+  }
+  void setArea(const QRectF& a) {
+    if (a == area_) {
+      update();
+      return;
+    }
+    prepareGeometryChange();
+    area_ = a;
+  }
+  const QList<QPointF>& lower() const { return lower_; }
+  const QList<QPointF>& upper() const { return upper_; }
+  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override {
+    if (lower_.isEmpty()) return;
+    p->setClipRect(area_);
+    // Column k spans from half-way to its left neighbour to half-way to its
+    // right one, on whole pixels: neither gaps nor doubly shaded stripes.
+    const qsizetype n = lower_.size();
+    std::vector<double> x(static_cast<std::size_t>(n));
+    for (qsizetype k = 0; k < n; ++k)
+      x[static_cast<std::size_t>(k)] = chart_.mapToPosition(QPointF((lower_[k].x() + upper_[k].x()) / 2.0, 0.0)).x();
+    const auto edge = [&](qsizetype k) {  // left edge of column k
+      const auto i = static_cast<std::size_t>(k);
+      if (k == 0) return std::floor(x[0] - 0.5);
+      if (k == n) return std::floor(x[i - 1] + 0.5) + 1.0;
+      return std::floor((x[i - 1] + x[i]) / 2.0);
+    };
+    // Columns that start on the same pixel are merged (their extremes
+    // joined), so no pixel is shaded twice and no extreme is lost.
+    struct Bar {
+      double l, r, top, bottom;
+    };
+    std::vector<Bar> bars;
+    bars.reserve(static_cast<std::size_t>(n));
+    for (qsizetype k = 0; k < n; ++k) {
+      const double y0 = chart_.mapToPosition(QPointF(0.0, lower_[k].y())).y();
+      const double y1 = chart_.mapToPosition(QPointF(0.0, upper_[k].y())).y();
+      const double l = edge(k), r = std::max(edge(k + 1), l + 1.0);
+      const double top = std::floor(std::min(y0, y1)), bottom = std::max(std::ceil(std::max(y0, y1)), top + 1.0);
+      if (!bars.empty() && l <= bars.back().l) {
+        Bar& b = bars.back();
+        b.r = std::max(b.r, r);
+        b.top = std::min(b.top, top);
+        b.bottom = std::max(b.bottom, bottom);
+        continue;
+      }
+      if (!bars.empty()) bars.back().r = std::min(bars.back().r, l);
+      bars.push_back({l, r, top, bottom});
+    }
+    for (const Bar& b : bars) p->fillRect(QRectF(b.l, b.top, b.r - b.l, b.bottom - b.top), color_);
+    // The envelope's edges in a stronger tone: a one-sample spike is a
+    // 1 px bar, too faint alone.
+    QPolygonF top, bottom;
+    for (const Bar& b : bars) {
+      top << QPointF(b.l + 0.5, b.top + 0.5);
+      bottom << QPointF(b.l + 0.5, b.bottom - 0.5);
+    }
+    QColor edge_color = color_;
+    edge_color.setAlpha(std::min(255, color_.alpha() * 2 + 40));
+    p->setPen(QPen(edge_color, 1.0));
+    p->drawPolyline(top);
+    p->drawPolyline(bottom);
+  }
+
+ private:
+  QChart& chart_;
+  QRectF area_;
+  QList<QPointF> lower_, upper_;
+  QColor color_;
+};
 
 LinkedChartView::LinkedChartView(QChart* chart, QWidget* parent) : QChartView(chart, parent) {
   setFocusPolicy(Qt::StrongFocus);
@@ -32,10 +143,21 @@ LinkedChartView::LinkedChartView(QChart* chart, QWidget* parent) : QChartView(ch
   crosshair_->setZValue(20);
   crosshair_->setVisible(false);
   scene()->addItem(crosshair_);
+  for (auto*& e : envelopes_) {
+    e = new EnvelopeItem(*chart);
+    e->setVisible(false);
+    scene()->addItem(e);
+  }
+  bands_item_ = new BandsItem(*this);
+  bands_item_->setVisible(false);
+  scene()->addItem(bands_item_);
   connect(chart, &QChart::plotAreaChanged, this, [this] { layoutOverlays(); });
   const auto axes = chart->axes(Qt::Horizontal);
   if (auto* x = axes.isEmpty() ? nullptr : qobject_cast<QValueAxis*>(axes.first()))
     connect(x, &QValueAxis::rangeChanged, this, [this] { layoutOverlays(); });
+  const auto ys = chart->axes(Qt::Vertical);
+  if (auto* y = ys.isEmpty() ? nullptr : qobject_cast<QValueAxis*>(ys.first()))
+    connect(y, &QValueAxis::rangeChanged, this, [this] { layoutOverlays(); });
 }
 
 double LinkedChartView::xToPixel(double x) const {
@@ -45,32 +167,26 @@ double LinkedChartView::xToPixel(double x) const {
 }
 
 void LinkedChartView::setBands(const std::vector<std::pair<double, double>>& bands, bool numbered) {
-  for (Band& b : bands_) {
-    delete b.rect;
-    delete b.label;
-  }
-  bands_.clear();
-  int k = 0;
-  for (const auto& [x0, x1] : bands) {
-    Band b{x0, x1, new QGraphicsRectItem, nullptr};
-    b.rect->setBrush(QColor(70, 170, 90, 45));
-    b.rect->setPen(Qt::NoPen);
-    b.rect->setZValue(1.5);
-    scene()->addItem(b.rect);
-    if (numbered) {
-      b.label = new QGraphicsSimpleTextItem(QString::number(++k));
-      b.label->setBrush(QColor(30, 110, 50));
-      b.label->setZValue(1.6);
-      scene()->addItem(b.label);
-    }
-    bands_.push_back(b);
-  }
+  bands_ = bands;
+  numbered_ = numbered;
   layoutOverlays();
+}
+
+void LinkedChartView::setEnvelope(int slot, QList<QPointF> lower, QList<QPointF> upper, const QColor& color) {
+  EnvelopeItem* e = envelopes_[static_cast<std::size_t>(slot)];
+  e->set(std::move(lower), std::move(upper), color);
+  e->setArea(chart()->plotArea());
+}
+
+const QList<QPointF>& LinkedChartView::envelopeEdge(int slot, bool upper) const {
+  const EnvelopeItem* e = envelopes_[static_cast<std::size_t>(slot)];
+  return upper ? e->upper() : e->lower();
 }
 
 int LinkedChartView::visibleBandCount() const {
   const auto [x0, x1] = xRange();
-  return static_cast<int>(std::count_if(bands_.begin(), bands_.end(), [&](const Band& b) { return b.x1 > x0 && b.x0 < x1; }));
+  return static_cast<int>(
+      std::count_if(bands_.begin(), bands_.end(), [&](const auto& b) { return b.second > x0 && b.first < x1; }));
 }
 
 void LinkedChartView::setCrosshair(std::optional<double> x) {
@@ -82,15 +198,32 @@ void LinkedChartView::layoutOverlays() {
   const QRectF a = chart()->plotArea();
   const auto [x0, x1] = xRange();
   const bool ok = a.width() > 0 && x1 > x0;
-  for (Band& b : bands_) {
-    const double l = std::max(xToPixel(b.x0), a.left()), r = std::min(xToPixel(b.x1), a.right());
-    const bool shown = ok && r > l;
-    b.rect->setVisible(shown);
-    if (b.label) b.label->setVisible(shown && r - l > b.label->boundingRect().width() + 2);
-    if (!shown) continue;
-    b.rect->setRect(QRectF(l, a.top(), r - l, a.height()));
-    if (b.label) b.label->setPos((l + r - b.label->boundingRect().width()) / 2, a.top() + 2);
+  for (EnvelopeItem* e : envelopes_) e->setArea(a);
+  bands_item_->setVisible(ok && !bands_.empty());
+  if (ok) bands_item_->setArea(a);
+  std::size_t used = 0;
+  for (std::size_t k = 0; numbered_ && ok && k < bands_.size(); ++k) {
+    const double l = std::max(xToPixel(bands_[k].first), a.left()), r = std::min(xToPixel(bands_[k].second), a.right());
+    // Numbers take ~8 px a digit: narrower bands (most of a long log at
+    // full view) go without one, as before.
+    if (r - l < 10.0) continue;
+    const QString text = QString::number(k + 1);
+    if (used == labels_.size()) {
+      auto* label = new QGraphicsSimpleTextItem;
+      label->setBrush(QColor(30, 110, 50));
+      label->setZValue(1.6);
+      scene()->addItem(label);
+      labels_.push_back(label);
+    }
+    QGraphicsSimpleTextItem* label = labels_[used];
+    if (label->text() != text) label->setText(text);
+    const double w = label->boundingRect().width();
+    if (r - l <= w + 2) continue;
+    label->setPos((l + r - w) / 2, a.top() + 2);
+    label->setVisible(true);
+    ++used;
   }
+  for (std::size_t k = used; k < labels_.size(); ++k) labels_[k]->setVisible(false);
   const bool cross = ok && crosshair_x_ && *crosshair_x_ >= x0 && *crosshair_x_ <= x1;
   crosshair_->setVisible(cross);
   if (cross) {

@@ -1,5 +1,6 @@
 #pragma once
 #include <QtCharts/QChartView>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -31,6 +32,12 @@ class LinkedChartView : public QChartView {
   int bandCount() const { return static_cast<int>(bands_.size()); }
   // Bands at least partly inside the visible X range.
   int visibleBandCount() const;
+  // A min/max envelope behind the lines (slot 0, 1: measured, commanded):
+  // a bar per column from `lower[k]` to `upper[k]` (chart values), painted
+  // by one item; empty lists hide it. Cheap at any length (the Qt Charts
+  // area series took ~0.1 s per repaint).
+  void setEnvelope(int slot, QList<QPointF> lower, QList<QPointF> upper, const QColor& color);
+  const QList<QPointF>& envelopeEdge(int slot, bool upper) const;
   // A vertical line at X (nullopt hides it).
   void setCrosshair(std::optional<double> x);
   std::optional<double> crosshair() const { return crosshair_x_; }
@@ -54,12 +61,16 @@ class LinkedChartView : public QChartView {
   std::pair<double, double> xRange() const;
   double xToPixel(double x) const;
   void layoutOverlays();
-  struct Band {
-    double x0, x1;
-    QGraphicsRectItem* rect;
-    QGraphicsSimpleTextItem* label;  // nullptr unless numbered
-  };
-  std::vector<Band> bands_;
+  // The bands are painted by one item, and number labels exist only for the
+  // bands wide enough to show one: an 1100 h log has thousands of segments,
+  // and an item each made every zoom step and the first paint cost ~0.5 s.
+  class BandsItem;
+  class EnvelopeItem;
+  std::array<EnvelopeItem*, 2> envelopes_{};
+  std::vector<std::pair<double, double>> bands_;
+  bool numbered_ = false;
+  BandsItem* bands_item_ = nullptr;
+  std::vector<QGraphicsSimpleTextItem*> labels_;  // reused; hidden when unused
   QGraphicsLineItem* crosshair_ = nullptr;
   std::optional<double> crosshair_x_;
   bool dragging_ = false;

@@ -48,10 +48,14 @@ void SegmentTable::show(const analysis::AnalysisReport* report, bool glider) {
         : tr("Each steady segment the analysis used (time in minutes): mean error ± its 95 % interval (depth: "
              "commanded − measured; pitch: measured − commanded; roll: as measured). Click a row to zoom to it."));
   if (!report) return;
+  // All rows at once: a row inserted at a time costs ~0.1 s per thousand
+  // (an 1100 h log has thousands of segments).
+  table_->setRowCount(static_cast<int>(
+      std::count_if(report->segments.begin(), report->segments.end(), [](const auto& s) { return s.used; })));
+  int r = -1;
   for (const auto& s : report->segments) {
     if (!s.used) continue;
-    const int r = table_->rowCount();
-    table_->insertRow(r);
+    ++r;
     ranges_.push_back({s.start_s / 60.0, s.end_s / 60.0});
     const QString cells[5] = {QString::number(r + 1),
                               QStringLiteral("%1–%2").arg(s.start_s / 60.0, 0, 'f', 1).arg(s.end_s / 60.0, 0, 'f', 1),

@@ -5,6 +5,7 @@
 #include <QtConcurrent/QtConcurrent>
 
 #include "common/input_error.h"
+#include "wizard/worker_pool.h"
 #include "missionlog/delimited_text_reader.h"
 #include "missionlog/log_reader.h"
 #include "missionlog/mission_files.h"
@@ -67,7 +68,8 @@ void LogImportJob::start(const QString& path, std::optional<ColumnMapping> mappi
   const std::size_t block = block_bytes_;
   auto cancel = cancel_;
   auto permille = permille_;
-  watcher_.setFuture(QtConcurrent::run([file, mission, block, cancel, permille, mapping = std::move(mapping)]() {
+  watcher_.setFuture(QtConcurrent::run(workerPool(), [file, mission, block, cancel, permille, mapping = std::move(mapping)]() {
+    lowerWorkerPriority();
     LogImportOutcome out;
     QElapsedTimer clock;
     clock.start();

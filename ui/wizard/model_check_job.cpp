@@ -3,6 +3,7 @@
 #include <QtConcurrent/QtConcurrent>
 
 #include "common/input_error.h"
+#include "wizard/worker_pool.h"
 
 namespace auv::ui {
 
@@ -19,8 +20,9 @@ void ModelCheckJob::waitForFinished() { watcher_.waitForFinished(); }
 void ModelCheckJob::start(std::shared_ptr<const MissionLog> log, VehicleProfile vehicle, std::string resource_dir,
                           discrepancy::CheckSetup setup, discrepancy::ModelCheckOptions options) {
   if (running() || !log) return;
-  watcher_.setFuture(QtConcurrent::run([log, vehicle = std::move(vehicle), dir = std::move(resource_dir),
+  watcher_.setFuture(QtConcurrent::run(workerPool(), [log, vehicle = std::move(vehicle), dir = std::move(resource_dir),
                                         setup = std::move(setup), options = std::move(options)]() {
+    lowerWorkerPriority();
     ModelCheckOutcome out;
     out.log = log;
     try {
