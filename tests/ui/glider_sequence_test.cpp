@@ -1,0 +1,226 @@
+// The glider post-mission -> pre-mission sequence of the wizard (issue 12
+// item 6) on the bundled Slocum log, driven as a person does: Next clicked,
+// target choices clicked, target values typed key by key. The grams shown
+// are checked against the CLI's own path through core (`model-check
+// --target-...`: analyzeMission with the target flags, the model check, the
+// joint answer, planGliderBallast), run here independently of the wizard.
+#include <gtest/gtest.h>
+
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QRegularExpression>
+#include <QScrollArea>
+#include <QtTest/QTest>
+#include <cmath>
+
+#include "analysis/mission_analysis.h"
+#include "discrepancy/glider_ballast_answer.h"
+#include "discrepancy/glider_check_model.h"
+#include "discrepancy/model_check_report.h"
+#include "discrepancy/vehicle_check.h"
+#include "history/store.h"
+#include "missionlog/interchange_csv.h"
+#include "pages/glider_ballast_page.h"
+#include "pages/glider_pre_mission_page.h"
+#include "pages/model_check_page.h"
+#include "planning/glider_ballast_plan.h"
+#include "screenshot.h"
+#include "typing.h"
+#include "ui_fixture.h"
+#include "vehicle/vehicle_catalog.h"
+#include "seawater/seawater.h"
+#include "widgets/glider_ballast_map.h"
+#include "widgets/inputs.h"
+#include "wizard/demo_state.h"
+#include "wizard/glider_work_order.h"
+#include "wizard/operator_wizard.h"
+
+namespace auv::ui {
+using auv::testing::find;
+using auv::testing::shot;
+using auv::testing::typeInto;
+
+namespace {
+
+const std::string kLog = std::string(AUV_RESOURCE_DIR) + "/examples/slocum_g2_model-check_compressibility.csv";
+
+// `auvballast model-check --vehicle slocum_g2 --log <log> [--target-...]`,
+// the recommendation part, through the same core calls as cmd_model_check.cpp.
+nlohmann::json cliAnswer(const MissionLog& log, const analysis::GliderTargetRequest& q) {
+  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("slocum_g2");
+  analysis::AnalysisOptions a;
+  a.glider_target = q;
+  const analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
+  nlohmann::json j = analysis::toJson(r);
+  const auto model = discrepancy::makeCheckModel(log, v, AUV_RESOURCE_DIR);
+  const discrepancy::ModelCheckResult mc = discrepancy::runModelCheck(*model);
+  discrepancy::mergeIntoAnalysisJson(j, mc);
+  const auto* glider = dynamic_cast<const discrepancy::GliderCheckModel*>(model.get());
+  EXPECT_NE(glider, nullptr);
+  const analysis::GliderTarget target{r.target_density_kgm3, r.target_pressure_dbar, r.target_temperature_degC, NAN,
+                                      r.target_basis};
+  discrepancy::mergeGliderAnswer(j, discrepancy::gliderBallastAnswer(*glider, mc, target));
+  return planGliderBallast(v, {j, {}, std::nullopt});
+}
+
+// The signed grams after "add" in the page's result line.
+double shownGrams(const QString& text) {
+  const auto m = QRegularExpression(R"(add\s*(?:<b>)?\s*([+-]?\d+))").match(text);
+  EXPECT_TRUE(m.hasMatch()) << text.toStdString();
+  return m.hasMatch() ? m.captured(1).toDouble() : NAN;
+}
+
+void clickRadio(QRadioButton* r) {
+  QTest::mouseClick(r, Qt::LeftButton, Qt::NoModifier, QPoint(8, r->height() / 2));
+  QApplication::processEvents();
+  ASSERT_TRUE(r->isChecked()) << r->objectName().toStdString();
+}
+
+}  // namespace
+
+class GliderSequence : public auv::testing::UiTest {
+ protected:
+  static void waitFor(const std::function<bool()>& busy) {
+    QElapsedTimer t;
+    t.start();
+    while (busy() && t.elapsed() < 60000) QApplication::processEvents(QEventLoop::AllEvents, 20);
+    QApplication::processEvents();
+  }
+  static void clickNext(OperatorWizard& w) {
+    QTest::mouseClick(w.button(QWizard::NextButton), Qt::LeftButton);
+    QApplication::processEvents();
+  }
+};
+
+TEST_F(GliderSequence, SlocumLogToGramsPerBottleTypedTargetsMatchTheCli) {
+  WizardState s = makeSlocumDemoState(AUV_RESOURCE_DIR);
+  s.mode = SessionMode::kPostMission;
+  s.log = std::make_shared<MissionLog>(readInterchangeCsv(kLog));
+  s.log_file = kLog;
+  s.log_format = "mission-log CSV v1";
+  s.log_report = ReadReport{};
+  const MissionLog& log = *s.log;
+  auto wiz = std::make_unique<OperatorWizard>(std::move(s));
+  wiz->setClock(fixedNow);
+  wiz->setAutosaveEnabled(false);
+  wiz->resize(1000, 760);
+  wiz->show();
+  wiz->next();
+  wiz->next();
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kLogImport);
+  clickNext(*wiz);
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kDeviationPlots);
+  clickNext(*wiz);
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kModelCheck);
+  auto* m = qobject_cast<ModelCheckPage*>(wiz->currentPage());
+  waitFor([m] { return m->job().running(); });
+  ASSERT_TRUE(wiz->state().model_check.has_value());
+  clickNext(*wiz);
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kGliderPreMission);
+  auto* page = qobject_cast<GliderPreMissionPage*>(wiz->currentPage());
+
+  // What the log showed: the analysis's grams and the term the check used.
+  EXPECT_NE(find<QLabel>(*wiz, "log_answer")->text().indexOf(signedFixed(wiz->state().analysis->mass_to_add_g.value, 0)), -1)
+      << find<QLabel>(*wiz, "log_answer")->text().toStdString();
+  EXPECT_NE(find<QLabel>(*wiz, "terms_used")->text().indexOf("hull_compressibility"), -1);
+
+  // Default: the log's own water at its deepest yo, and the page says so.
+  EXPECT_TRUE(find<QRadioButton>(*wiz, "target_log")->isChecked());
+  EXPECT_NE(find<QLabel>(*wiz, "target_resolved")->text().indexOf("default: the log's own water at the bottom of its deepest yo"), -1)
+      << find<QLabel>(*wiz, "target_resolved")->text().toStdString();
+  const nlohmann::json def = cliAnswer(log, {});
+  EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(def["mass_to_add_g"].get<double>()));
+  shot(*wiz, "70_glider_pre_mission");
+
+  // A depth in the log's own CTD profile, typed.
+  clickRadio(find<QRadioButton>(*wiz, "target_depth_choice"));
+  typeInto(find<NumberInput>(*wiz, "glider_target_depth"), "100");
+  analysis::GliderTargetRequest q;
+  q.depth_m = 100.0;
+  const nlohmann::json atDepth = cliAnswer(log, q);
+  EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(atDepth["mass_to_add_g"].get<double>()));
+  EXPECT_NE(find<QLabel>(*wiz, "target_resolved")->text().indexOf("CTD at 100.0 m"), -1);
+
+  // A density, typed.
+  clickRadio(find<QRadioButton>(*wiz, "target_density_choice"));
+  typeInto(find<NumberInput>(*wiz, "glider_target_density"), "1027.3");
+  EXPECT_EQ(find<NumberInput>(*wiz, "glider_target_density")->value(), 1027.3);
+  EXPECT_EQ(page->choice().density_kgm3, 1027.3);
+  EXPECT_EQ(static_cast<int>(page->choice().kind), 1);
+  q = {};
+  q.density_kgm3 = 1027.3;
+  const nlohmann::json atDensity = cliAnswer(log, q);
+  EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(atDensity["mass_to_add_g"].get<double>()))
+      << find<QLabel>(*wiz, "target_resolved")->text().toStdString() << " / " << atDensity["target"].dump();
+
+  // Pressure and temperature (deeper and colder than the log), then a salinity.
+  clickRadio(find<QRadioButton>(*wiz, "target_pt_choice"));
+  typeInto(find<NumberInput>(*wiz, "glider_target_pressure"), "180");
+  typeInto(find<NumberInput>(*wiz, "glider_target_temperature"), "6.5");
+  q = {};
+  q.pressure_dbar = 180.0;
+  q.temperature_degC = 6.5;
+  const nlohmann::json atPT = cliAnswer(log, q);
+  EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(atPT["mass_to_add_g"].get<double>()));
+  typeInto(find<NumberInput>(*wiz, "glider_target_salinity"), "35.2");
+  q.density_kgm3 = seawater::density(35.2, 6.5, 180.0);
+  const nlohmann::json oracle = cliAnswer(log, q);
+  EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(oracle["mass_to_add_g"].get<double>()));
+  // Different targets, different answers (the test would see a page that ignores them).
+  EXPECT_NE(std::round(atPT["mass_to_add_g"].get<double>()), std::round(def["mass_to_add_g"].get<double>()));
+  EXPECT_NE(std::round(atDensity["mass_to_add_g"].get<double>()), std::round(def["mass_to_add_g"].get<double>()));
+  EXPECT_EQ(page->answer().plan["points"], oracle["points"]);
+
+  clickNext(*wiz);
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kGliderBallast);
+  // Grams per bottle in words, each the core's figure.
+  const QString steps = find<QLabel>(*wiz, "glider_steps")->text();
+  int changed = 0;
+  for (const auto& p : oracle["points"]) {
+    const double g = p["add_g"].get<double>();
+    if (g == 0.0) continue;
+    ++changed;
+    const QString want = QString("%1: %2 %3 g").arg(QString::fromStdString(p["label"].get<std::string>()),
+                                                   g > 0 ? "add" : "take out").arg(std::abs(g), 0, 'f', 0);
+    EXPECT_NE(steps.indexOf(want), -1) << want.toStdString() << " in " << steps.toStdString();
+  }
+  EXPECT_GT(changed, 0);
+  EXPECT_NE(steps.indexOf(QString("%1 g in all").arg(signedFixed(oracle["total_change_g"].get<double>(), 0))), -1)
+      << steps.toStdString();
+  // The map: one place per bottle and rail with the same grams, labels apart.
+  auto* map = find<GliderBallastMap>(*wiz, "glider_map");
+  ASSERT_EQ(map->model().places.size(), oracle["points"].size());
+  for (std::size_t i = 0; i < map->model().places.size(); ++i)
+    EXPECT_EQ(map->model().places[i].add_g, oracle["points"][i]["add_g"].get<double>());
+  shot(*wiz, "71_glider_ballast");
+  const auto& rects = map->labelRects();
+  ASSERT_EQ(rects.size(), 2 * oracle["points"].size());
+  for (std::size_t i = 0; i < rects.size(); ++i)
+    for (std::size_t k = i + 1; k < rects.size(); ++k) EXPECT_FALSE(rects[i].intersects(rects[k])) << i << " " << k;
+  // The work order lists the same grams.
+  const WorkOrder wo = makeGliderWorkOrder(wiz->state(), fixedNow());
+  ASSERT_EQ(wo.rows.size(), oracle["points"].size());
+  for (std::size_t i = 0; i < wo.rows.size(); ++i)
+    EXPECT_EQ(wo.rows[i][1], QString("%1 g").arg(signedFixed(oracle["points"][i]["add_g"].get<double>(), 0)));
+  auto* bp = qobject_cast<GliderBallastPage*>(wiz->currentPage());
+  EXPECT_EQ(bp->exportWorkOrder(path("work_order.pdf")), QString());
+  EXPECT_GT(QFileInfo(path("work_order.pdf")).size(), 1000);
+  const QImage order = renderWorkOrder(wo);
+  order.save(QString(AUV_SCREENSHOT_DIR) + "/72_glider_work_order.png");
+
+  // Fits a 1366 x 768 laptop screen.
+  EXPECT_LE(wiz->minimumSizeHint().height(), 768);
+
+  // Finish saves the mission.
+  QTest::mouseClick(wiz->button(QWizard::FinishButton), Qt::LeftButton);
+  QApplication::processEvents();
+  EXPECT_EQ(wiz->result(), QDialog::Accepted);
+  HistoryStore store(path("history.sqlite").toStdString());
+  int missions = 0;
+  for (const auto& e : store.history(wiz->state().configuration_id)) missions += e.kind == EventKind::kMission;
+  EXPECT_EQ(missions, 1);
+}
+
+}  // namespace auv::ui
