@@ -14,6 +14,7 @@
 #include <QScrollArea>
 #include <QtTest/QTest>
 #include <cmath>
+#include <fstream>
 
 #include "analysis/mission_analysis.h"
 #include "discrepancy/glider_ballast_answer.h"
@@ -27,6 +28,11 @@
 #include "pages/model_check_page.h"
 #include "planning/glider_ballast_plan.h"
 #include "screenshot.h"
+#include "sim/glider_model.h"
+#include "sim/glider_simulator.h"
+#include "sim/mission_plan.h"
+#include "sim/sim_log.h"
+#include "vehicle/json_reader.h"
 #include "typing.h"
 #include "ui_fixture.h"
 #include "vehicle/vehicle_catalog.h"
@@ -48,8 +54,8 @@ const std::string kLog = std::string(AUV_RESOURCE_DIR) + "/examples/slocum_g2_mo
 
 // `auvballast model-check --vehicle slocum_g2 --log <log> [--target-...]`,
 // the recommendation part, through the same core calls as cmd_model_check.cpp.
-nlohmann::json cliAnswer(const MissionLog& log, const analysis::GliderTargetRequest& q) {
-  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("slocum_g2");
+nlohmann::json cliAnswer(const MissionLog& log, const analysis::GliderTargetRequest& q, const std::string& vehicle = "slocum_g2") {
+  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load(vehicle);
   analysis::AnalysisOptions a;
   a.glider_target = q;
   const analysis::AnalysisReport r = analysis::analyzeMission(log, v, a);
@@ -221,6 +227,86 @@ TEST_F(GliderSequence, SlocumLogToGramsPerBottleTypedTargetsMatchTheCli) {
   int missions = 0;
   for (const auto& e : store.history(wiz->state().configuration_id)) missions += e.kind == EventKind::kMission;
   EXPECT_EQ(missions, 1);
+}
+
+// A Seaglider mission made with the project's own simulator (no Seaglider log
+// is bundled): the bundled Slocum yo plan, 1.5 h, flown by the seaglider
+// profile with the simulator's steady-glide constants (the profile has no
+// "glider_flight" section; the analysis then fits its own hd_a/b/c form to it).
+std::string simulateSeagliderMission(const QString& dir) {
+  const std::string vehicles = std::string(AUV_RESOURCE_DIR) + "/vehicles/";
+  nlohmann::json sg = JsonReader::parseFile(vehicles + "seaglider.json");
+  sg["glider_flight"] = JsonReader::parseFile(vehicles + "slocum_g2.json")["glider_flight"];
+  const std::string profile = (dir + "/seaglider_sim.json").toStdString();
+  std::ofstream(profile) << sg.dump(1);
+  const VehicleProfile v = VehicleCatalog(vehicles).load(profile);
+  const std::string plan_file = std::string(AUV_RESOURCE_DIR) + "/examples/slocum_g2_yo.plan.json";
+  nlohmann::json doc = JsonReader::parseFile(plan_file);
+  doc["vehicle"] = profile;
+  doc["legs"][0]["duration_s"] = 5400.0;
+  doc["legs"][0]["dive_to_m"] = 180.0;
+  doc["options"]["trace_interval_s"] = 4.0;
+  const sim::MissionPlan plan = sim::parseMissionPlan(doc, plan_file);
+  const auto tr = sim::simulateGlider(sim::loadGliderModel(v), plan.water, sim::resolveGliderScenario(plan, v), plan.options);
+  const std::string out = (dir + "/sg_mission.csv").toStdString();
+  sim::writeSimulatedLog(tr, {"seaglider", "plan", plan_file, plan.options.seed, 0, {}, {}}, out);
+  return out;
+}
+
+TEST_F(GliderSequence, SeagliderLeadAndVbdFromItsOwnLog) {
+  const std::string file = simulateSeagliderMission(dirPath());
+  WizardState s = makeSlocumDemoState(AUV_RESOURCE_DIR);
+  s.vehicle = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("seaglider");
+  s.configuration_id = "171-1-1";
+  s.mode = SessionMode::kPostMission;
+  s.log = std::make_shared<MissionLog>(readInterchangeCsv(file));
+  s.log_file = file;
+  s.log_format = "mission-log CSV v1";
+  s.log_report = ReadReport{};
+  const MissionLog& log = *s.log;
+  auto wiz = std::make_unique<OperatorWizard>(std::move(s));
+  wiz->setClock(fixedNow);
+  wiz->setAutosaveEnabled(false);
+  wiz->resize(1000, 760);
+  wiz->show();
+  wiz->next();
+  wiz->next();
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kLogImport);
+  clickNext(*wiz);
+  clickNext(*wiz);
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kModelCheck);
+  auto* m = qobject_cast<ModelCheckPage*>(wiz->currentPage());
+  waitFor([m] { return m->job().running(); });
+  clickNext(*wiz);
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kGliderPreMission);
+  // The next deployment 10 m shallower than the log's deepest yo, typed.
+  clickRadio(find<QRadioButton>(*wiz, "target_depth_choice"));
+  typeInto(find<NumberInput>(*wiz, "glider_target_depth"), "170");
+  analysis::GliderTargetRequest q;
+  q.depth_m = 170.0;
+  const nlohmann::json oracle = cliAnswer(log, q, "seaglider");
+  EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(oracle["mass_to_add_g"].get<double>()));
+  clickNext(*wiz);
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kGliderBallast);
+  const auto& sgo = oracle["seaglider"];
+  const QString steps = find<QLabel>(*wiz, "glider_steps")->text();
+  EXPECT_NE(steps.indexOf(QString("Set $C_VBD from 2680 to %1").arg(sgo["C_VBD_new"].get<double>(), 0, 'f', 0)), -1) << steps.toStdString();
+  const double lead = sgo["lead_change_g"].get<double>();
+  EXPECT_NE(steps.indexOf(lead == 0.0 ? QString("Lead: no change") : QString("Lead: %1 %2 g").arg(lead > 0 ? "add" : "take off").arg(std::abs(lead), 0, 'f', 0)), -1)
+      << steps.toStdString();
+  // $C_PITCH: set when the pitch mass can reach it, else kept and said why
+  // (this log's pitch battery is a Slocum's, so its trim need not fit).
+  const double cp = sgo["C_PITCH_new"].get<double>();
+  const bool reachable = cp >= 230.0 && cp <= 3900.0;  // seaglider.json PITCH_MIN .. PITCH_MAX
+  EXPECT_NE(steps.indexOf(reachable ? QString("Set $C_PITCH from 2145 to %1").arg(cp, 0, 'f', 0)
+                                    : QString("Keep $C_PITCH at 2145: the log's pitch trim gives %1").arg(cp, 0, 'f', 0)),
+            -1)
+      << steps.toStdString();
+  EXPECT_NE(find<GliderBallastMap>(*wiz, "glider_map")->model().note.indexOf(QString("%1").arg(sgo["C_VBD_new"].get<double>(), 0, 'f', 0)), -1);
+  shot(*wiz, "73_glider_ballast_seaglider");
+  QTest::mouseClick(wiz->button(QWizard::FinishButton), Qt::LeftButton);
+  QApplication::processEvents();
+  EXPECT_EQ(wiz->result(), QDialog::Accepted);
 }
 
 }  // namespace auv::ui

@@ -83,7 +83,7 @@ GliderBallastPage::GliderBallastPage(WizardState& state) : state_(state) {
 
 void GliderBallastPage::initializePage() {
   save_status_->clear();
-  const GliderInstructions in = gliderInstructions(state_.glider_plan);
+  const GliderInstructions in = gliderInstructions(state_.glider_plan, state_.vehicle ? &*state_.vehicle : nullptr);
   headline_->setText("<b>" + in.headline.toHtmlEscaped() + "</b><br>" + in.target.toHtmlEscaped());
   steps_->setText(bullets(in.steps));
   QStringList notes;

@@ -147,7 +147,9 @@ GliderMapModel makeGliderMapModel(const VehicleProfile& v, const nlohmann::json&
       m.places.push_back(pl);
     }
     m.note = GliderBallastMap::tr("$C_VBD %1 → %2").arg(num(s, "C_VBD_old", 0), 0, 'f', 0).arg(num(s, "C_VBD_new", 0), 0, 'f', 0);
-    if (s.contains("C_PITCH_new"))
+    const nlohmann::json sg = v.sections.contains("seaglider") ? v.sections["seaglider"] : nlohmann::json::object();
+    const double c = num(s, "C_PITCH_new", NAN);
+    if (c >= num(sg, "PITCH_MIN", -1e9) && c <= num(sg, "PITCH_MAX", 1e9))  // else the steps say why it stays
       m.note += GliderBallastMap::tr(", $C_PITCH %1 → %2").arg(num(s, "C_PITCH_old", 0), 0, 'f', 0).arg(num(s, "C_PITCH_new", 0), 0, 'f', 0);
   } else if (m.places.empty()) {
     m.note = GliderBallastMap::tr("The log does not tell where the grams go on this glider (see the notes).");

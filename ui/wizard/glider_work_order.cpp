@@ -53,7 +53,7 @@ void slocumSteps(const nlohmann::json& p, GliderInstructions& out) {
   }
 }
 
-void seagliderSteps(const nlohmann::json& p, GliderInstructions& out) {
+void seagliderSteps(const nlohmann::json& p, const VehicleProfile* v, GliderInstructions& out) {
   const auto& s = p["seaglider"];
   const double lead = num(s, "lead_change_g", 0.0);
   out.steps << (lead == 0.0 ? T::tr("Lead: no change (the VBD takes it).")
@@ -63,17 +63,31 @@ void seagliderSteps(const nlohmann::json& p, GliderInstructions& out) {
                    .arg(num(s, "C_VBD_old", 0.0), 0, 'f', 0)
                    .arg(num(s, "C_VBD_new", 0.0), 0, 'f', 0)
                    .arg(signedFixed(num(s, "VBD_change_cm3", 0.0), 1));
-  if (s.contains("C_PITCH_new"))
-    out.steps << T::tr("Set $C_PITCH from %1 to %2 (pitch mass for level flight at %3 mm).")
-                     .arg(num(s, "C_PITCH_old", 0.0), 0, 'f', 0)
-                     .arg(num(s, "C_PITCH_new", 0.0), 0, 'f', 0)
-                     .arg(num(s, "pitch_mass_for_level_mm", 0.0), 0, 'f', 1);
+  if (s.contains("C_PITCH_new")) {
+    const nlohmann::json sg = v && v->sections.contains("seaglider") ? v->sections["seaglider"] : nlohmann::json::object();
+    const double lo = num(sg, "PITCH_MIN", -1e9), hi = num(sg, "PITCH_MAX", 1e9), c = num(s, "C_PITCH_new", 0.0);
+    if (c >= lo && c <= hi) {
+      out.steps << T::tr("Set $C_PITCH from %1 to %2 (pitch mass for level flight at %3 mm).")
+                       .arg(num(s, "C_PITCH_old", 0.0), 0, 'f', 0)
+                       .arg(c, 0, 'f', 0)
+                       .arg(num(s, "pitch_mass_for_level_mm", 0.0), 0, 'f', 1);
+    } else {
+      // A count the pitch mass cannot reach: the log's pitch trim does not
+      // fit this vehicle; asking for it would be a wrong instruction.
+      out.steps << T::tr("Keep $C_PITCH at %1: the log's pitch trim gives %2, outside PITCH_MIN .. PITCH_MAX (%3 .. %4); "
+                         "check the pitch trim on a test dive.")
+                       .arg(num(s, "C_PITCH_old", 0.0), 0, 'f', 0)
+                       .arg(c, 0, 'f', 0)
+                       .arg(lo, 0, 'f', 0)
+                       .arg(hi, 0, 'f', 0);
+    }
+  }
   out.steps << T::tr("Basis: %1.").arg(q(s.value("basis", std::string())));
 }
 
 }  // namespace
 
-GliderInstructions gliderInstructions(const nlohmann::json& p) {
+GliderInstructions gliderInstructions(const nlohmann::json& p, const VehicleProfile* v) {
   GliderInstructions out;
   if (!p.is_object()) return out;
   const double add = num(p, "mass_to_add_g", 0.0), sigma = num(p, "mass_to_add_sigma_g");
@@ -89,7 +103,7 @@ GliderInstructions gliderInstructions(const nlohmann::json& p) {
   if (type == "slocum") {
     slocumSteps(p, out);
   } else if (type == "seaglider") {
-    seagliderSteps(p, out);
+    seagliderSteps(p, v, out);
   } else {
     out.steps << T::tr("Change the glider's mass by %1 g at its ballast places so that it stays level.").arg(g0(add));
     if (p.contains("linear_battery_for_level_mm"))
@@ -105,7 +119,7 @@ WorkOrder makeGliderWorkOrder(const WizardState& s, TimePoint now) {
     throw InputError("plan", "no glider answer yet", "go back to the glider pre-mission page");
   const VehicleProfile& v = *s.vehicle;
   const nlohmann::json& p = s.glider_plan;
-  const GliderInstructions in = gliderInstructions(p);
+  const GliderInstructions in = gliderInstructions(p, &v);
   WorkOrder w;
   w.title = WorkOrder::tr("Ballast work order");
   w.header << WorkOrder::tr("Vehicle: %1 (%2)").arg(q(v.name), q(v.id)) << WorkOrder::tr("Configuration: %1").arg(q(s.configuration_id))
@@ -126,6 +140,9 @@ WorkOrder makeGliderWorkOrder(const WizardState& s, TimePoint now) {
     w.rows.push_back({q(pt.value("label", pt.value("name", std::string()))), T::tr("%1 g").arg(g0(add)), pieces,
                       std::isfinite(cap) ? T::tr("%1 g").arg(cap, 0, 'f', 0) : QString(), QString(), QString()});
   }
+  const double sigma = num(p, "mass_to_add_sigma_g");
+  w.expected << (std::isfinite(sigma) ? T::tr("Neutral with the pump at zero in the water above, within ± %1 g (1 σ).").arg(fixed(sigma, 0))
+                                      : T::tr("Neutral with the pump at zero in the water above."));
   w.notes = in.steps;
   for (const auto& c : in.cannot_tell) w.notes << T::tr("Cannot tell: %1").arg(c);
   w.warnings = in.warnings;
@@ -144,6 +161,7 @@ WorkOrder makeGliderWorkOrder(const WizardState& s, TimePoint now) {
     mp.label = ap->label;
     mp.x_m = ap->position_m.x();
     mp.y_m = ap->position_m.y();
+    mp.installed_kg = NAN;  // the bottles' contents were not entered
     const int g = static_cast<int>(std::round(num(pt, "add_g", 0.0)));
     if (g != 0) mp.change.push_back({0.001, g});
     mp.change_kg = g / 1000.0;

@@ -24,7 +24,9 @@ struct GliderInstructions {
   QStringList warnings;
 };
 
-GliderInstructions gliderInstructions(const nlohmann::json& plan);
+// `vehicle` (may be null) supplies the ranges a setting must stay inside
+// (Seaglider PITCH_MIN..PITCH_MAX): a value outside is said, not asked for.
+GliderInstructions gliderInstructions(const nlohmann::json& plan, const VehicleProfile* vehicle = nullptr);
 
 // The glider's work order (the same page drawWorkOrder prints): a row per
 // ballast place, the steps, the top-down map. Throws InputError when the
