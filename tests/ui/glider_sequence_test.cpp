@@ -42,6 +42,7 @@
 #include "wizard/demo_state.h"
 #include "wizard/glider_work_order.h"
 #include "wizard/operator_wizard.h"
+#include "wizard/translations.h"
 
 namespace auv::ui {
 using auv::testing::find;
@@ -307,6 +308,28 @@ TEST_F(GliderSequence, SeagliderLeadAndVbdFromItsOwnLog) {
   QTest::mouseClick(wiz->button(QWizard::FinishButton), Qt::LeftButton);
   QApplication::processEvents();
   EXPECT_EQ(wiz->result(), QDialog::Accepted);
+}
+
+TEST_F(GliderSequence, NorwegianWordsOnTheGliderPagesAndSteps) {
+  ASSERT_TRUE(installTranslation(QLocale(QLocale::NorwegianBokmal)));
+  {
+    OperatorWizard wiz(makeSlocumDemoState(AUV_RESOURCE_DIR));
+    EXPECT_EQ(wiz.page(OperatorWizard::kGliderPreMission)->title(), "Glider: vannet ved neste utsetting");
+    EXPECT_EQ(wiz.page(OperatorWizard::kGliderBallast)->title(), "Glider: hvor grammene skal");
+    // The steps of a core answer (+120 g, Baird's level split) in Norwegian.
+    const VehicleProfile& v = *wiz.state().vehicle;
+    const nlohmann::json report = {{"mass_to_add_g", 120.0}, {"mass_to_add_sigma_g", 5.0},
+                                   {"target", {{"density_kgm3", 1026.0}, {"pressure_dbar", 100.0}, {"temperature_degC", 8.0}, {"basis", "x"}}}};
+    const nlohmann::json plan = planGliderBallast(v, {report, {}, std::nullopt});
+    const GliderInstructions in = gliderInstructions(plan, &v);
+    ASSERT_FALSE(in.steps.isEmpty());
+    const auto& first = plan["points"][0];
+    EXPECT_EQ(in.steps[0], QString("%1: legg i %2 g blyhagl (rommer høyst 450 g).")
+                               .arg(QString::fromStdString(first["label"].get<std::string>()))
+                               .arg(first["add_g"].get<double>(), 0, 'f', 0));
+    EXPECT_TRUE(in.headline.startsWith("Masse å legge til +120 ± 5 g")) << in.headline.toStdString();
+  }
+  removeTranslation();
 }
 
 }  // namespace auv::ui
