@@ -310,6 +310,31 @@ TEST_F(GliderSequence, SeagliderLeadAndVbdFromItsOwnLog) {
   EXPECT_EQ(wiz->result(), QDialog::Accepted);
 }
 
+// SeaExplorer (no bundled log; a profile without Slocum bottles or Seaglider
+// VBD): the page says the mass change and everything core cannot tell, and
+// the map draws no invented places.
+TEST_F(GliderSequence, SeaExplorerSaysWhatItCannotTell) {
+  VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("slocum_g2");
+  v.sections.erase("slocum");
+  v.sections["seaexplorer"] = nlohmann::json::object();
+  const nlohmann::json report = {
+      {"mass_to_add_g", -37.4}, {"mass_to_add_sigma_g", 6.0},
+      {"target", {{"density_kgm3", 1027.5}, {"pressure_dbar", 300.0}, {"temperature_degC", 4.0}, {"basis", "x"}}},
+      {"details", {{"glider_trim", {{"pitch", {{"T1_per_cm3", 0.001}, {"T2_per_mm", -0.02}, {"T3", 0.31}}}}}}}};
+  const nlohmann::json plan = planGliderBallast(v, {report, {}, std::nullopt});
+  ASSERT_EQ(plan["vehicle_type"], "seaexplorer");
+  const GliderInstructions in = gliderInstructions(plan, &v);
+  EXPECT_TRUE(in.steps.contains("Change the glider's mass by -37 g at its ballast places so that it stays level."))
+      << in.steps.join("\n").toStdString();
+  EXPECT_TRUE(in.steps.contains(QString("Linear battery for level flight at pump zero: %1 mm.")
+                                    .arg(plan["linear_battery_for_level_mm"].get<double>(), 0, 'f', 1)));
+  ASSERT_EQ(in.cannot_tell.size(), static_cast<qsizetype>(plan["cannot_tell"].size()));
+  EXPECT_GE(in.cannot_tell.size(), 2);
+  const GliderMapModel m = makeGliderMapModel(v, plan);
+  EXPECT_TRUE(m.places.empty());
+  EXPECT_NE(m.note.indexOf("does not tell where the grams go"), -1);
+}
+
 TEST_F(GliderSequence, NorwegianWordsOnTheGliderPagesAndSteps) {
   ASSERT_TRUE(installTranslation(QLocale(QLocale::NorwegianBokmal)));
   {
