@@ -3230,6 +3230,21 @@
         <source> (remove %1 g)</source>
         <translation> (ta ut %1 g)</translation>
     </message>
+    <message>
+        <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="199" />
+        <source>history, %1</source>
+        <translation>historikk, %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="202" />
+        <source>What the bottles hold now is not in the history: capacities are checked against half-full bottles.</source>
+        <translation>Hva flaskene inneholder nå, står ikke i historikken: kapasitetene sjekkes mot halvfulle flasker.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="207" />
+        <source>Installed now (%1): %2.</source>
+        <translation>Montert nå (%1): %2.</translation>
+    </message>
 </context>
 <context>
     <name>auv::ui::GliderBallastPage</name>

@@ -55,7 +55,8 @@ const std::string kLog = std::string(AUV_RESOURCE_DIR) + "/examples/slocum_g2_mo
 
 // `auvballast model-check --vehicle slocum_g2 --log <log> [--target-...]`,
 // the recommendation part, through the same core calls as cmd_model_check.cpp.
-nlohmann::json cliAnswer(const MissionLog& log, const analysis::GliderTargetRequest& q, const std::string& vehicle = "slocum_g2") {
+nlohmann::json cliAnswer(const MissionLog& log, const analysis::GliderTargetRequest& q, const std::string& vehicle = "slocum_g2",
+                         const std::vector<double>& installed = {}) {
   const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load(vehicle);
   analysis::AnalysisOptions a;
   a.glider_target = q;
@@ -69,7 +70,26 @@ nlohmann::json cliAnswer(const MissionLog& log, const analysis::GliderTargetRequ
   const analysis::GliderTarget target{r.target_density_kgm3, r.target_pressure_dbar, r.target_temperature_degC, NAN,
                                       r.target_basis};
   discrepancy::mergeGliderAnswer(j, discrepancy::gliderBallastAnswer(*glider, mc, target));
-  return planGliderBallast(v, {j, {}, std::nullopt});
+  return planGliderBallast(v, {j, installed, std::nullopt});
+}
+
+// The Slocum's bottles as the history has them (profile order): bow bottles
+// nearly full, so the bow cannot take its whole share.
+const std::vector<double> kInstalled = {0.43, 0.43, 0.10, 0.10, 0.06, 0.06};
+
+void seedSlocumHistory(const QString& file) {
+  HistoryStore store(file.toStdString());
+  Configuration c;
+  c.config_id = "49-1-1";
+  c.vehicle_key = "slocum_g2";
+  c.vehicle_name = "Slocum G2 electric glider";
+  c.created_at = makeUtc(2026, 5, 1);
+  store.addConfiguration(c);
+  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("slocum_g2");
+  InstalledState st;
+  st.installed_at = makeUtc(2026, 5, 2);
+  for (std::size_t i = 0; i < v.points.size(); ++i) st.points.push_back({v.points[i].name, kInstalled[i], {}});
+  store.addInstalledState("49-1-1", st);
 }
 
 // The signed grams after "add" in the page's result line.
@@ -102,7 +122,10 @@ class GliderSequence : public auv::testing::UiTest {
 };
 
 TEST_F(GliderSequence, SlocumLogToGramsPerBottleTypedTargetsMatchTheCli) {
+  seedSlocumHistory(path("history.sqlite"));
   WizardState s = makeSlocumDemoState(AUV_RESOURCE_DIR);
+  ASSERT_EQ(s.configuration_id, "49-1-1");
+  s.configuration_in_history = true;
   s.mode = SessionMode::kPostMission;
   s.log = std::make_shared<MissionLog>(readInterchangeCsv(kLog));
   s.log_file = kLog;
@@ -132,12 +155,15 @@ TEST_F(GliderSequence, SlocumLogToGramsPerBottleTypedTargetsMatchTheCli) {
   EXPECT_NE(find<QLabel>(*wiz, "log_answer")->text().indexOf(signedFixed(wiz->state().analysis->mass_to_add_g.value, 0)), -1)
       << find<QLabel>(*wiz, "log_answer")->text().toStdString();
   EXPECT_NE(find<QLabel>(*wiz, "terms_used")->text().indexOf("hull_compressibility"), -1);
+  // What the bottles hold now, from the history.
+  EXPECT_NE(find<QLabel>(*wiz, "glider_installed_now")->text().indexOf("Installed now (history, 2026-05-02): Bow bottle / port " + massText(0.43, true)), -1)
+      << find<QLabel>(*wiz, "glider_installed_now")->text().toStdString();
 
   // Default: the log's own water at its deepest yo, and the page says so.
   EXPECT_TRUE(find<QRadioButton>(*wiz, "target_log")->isChecked());
   EXPECT_NE(find<QLabel>(*wiz, "target_resolved")->text().indexOf("default: the log's own water at the bottom of its deepest yo"), -1)
       << find<QLabel>(*wiz, "target_resolved")->text().toStdString();
-  const nlohmann::json def = cliAnswer(log, {});
+  const nlohmann::json def = cliAnswer(log, {}, "slocum_g2", kInstalled);
   EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(def["mass_to_add_g"].get<double>()));
   shot(*wiz, "70_glider_pre_mission");
 
@@ -146,7 +172,7 @@ TEST_F(GliderSequence, SlocumLogToGramsPerBottleTypedTargetsMatchTheCli) {
   typeInto(find<NumberInput>(*wiz, "glider_target_depth"), "100");
   analysis::GliderTargetRequest q;
   q.depth_m = 100.0;
-  const nlohmann::json atDepth = cliAnswer(log, q);
+  const nlohmann::json atDepth = cliAnswer(log, q, "slocum_g2", kInstalled);
   EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(atDepth["mass_to_add_g"].get<double>()));
   EXPECT_NE(find<QLabel>(*wiz, "target_resolved")->text().indexOf("CTD at 100.0 m"), -1);
 
@@ -158,7 +184,7 @@ TEST_F(GliderSequence, SlocumLogToGramsPerBottleTypedTargetsMatchTheCli) {
   EXPECT_EQ(static_cast<int>(page->choice().kind), 1);
   q = {};
   q.density_kgm3 = 1027.3;
-  const nlohmann::json atDensity = cliAnswer(log, q);
+  const nlohmann::json atDensity = cliAnswer(log, q, "slocum_g2", kInstalled);
   EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(atDensity["mass_to_add_g"].get<double>()))
       << find<QLabel>(*wiz, "target_resolved")->text().toStdString() << " / " << atDensity["target"].dump();
 
@@ -169,11 +195,11 @@ TEST_F(GliderSequence, SlocumLogToGramsPerBottleTypedTargetsMatchTheCli) {
   q = {};
   q.pressure_dbar = 180.0;
   q.temperature_degC = 6.5;
-  const nlohmann::json atPT = cliAnswer(log, q);
+  const nlohmann::json atPT = cliAnswer(log, q, "slocum_g2", kInstalled);
   EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(atPT["mass_to_add_g"].get<double>()));
   typeInto(find<NumberInput>(*wiz, "glider_target_salinity"), "35.2");
   q.density_kgm3 = seawater::density(35.2, 6.5, 180.0);
-  const nlohmann::json oracle = cliAnswer(log, q);
+  const nlohmann::json oracle = cliAnswer(log, q, "slocum_g2", kInstalled);
   EXPECT_EQ(shownGrams(find<QLabel>(*wiz, "glider_result")->text()), std::round(oracle["mass_to_add_g"].get<double>()));
   // Different targets, different answers (the test would see a page that ignores them).
   EXPECT_NE(std::round(atPT["mass_to_add_g"].get<double>()), std::round(def["mass_to_add_g"].get<double>()));
@@ -199,8 +225,17 @@ TEST_F(GliderSequence, SlocumLogToGramsPerBottleTypedTargetsMatchTheCli) {
   // The map: one place per bottle and rail with the same grams, labels apart.
   auto* map = find<GliderBallastMap>(*wiz, "glider_map");
   ASSERT_EQ(map->model().places.size(), oracle["points"].size());
-  for (std::size_t i = 0; i < map->model().places.size(); ++i)
+  for (std::size_t i = 0; i < map->model().places.size(); ++i) {
     EXPECT_EQ(map->model().places[i].add_g, oracle["points"][i]["add_g"].get<double>());
+    // Capacities respected: what each place holds afterwards, against what it can.
+    EXPECT_EQ(map->model().places[i].after_g, std::round(1000 * kInstalled[i]) + oracle["points"][i]["add_g"].get<double>());
+    EXPECT_LE(map->model().places[i].after_g, oracle["points"][i]["capacity_g"].get<double>());
+  }
+  // The bow is nearly full: it cannot take Baird's share, and the page says what core warned.
+  EXPECT_LE(oracle["points"][0]["add_g"].get<double>(), 20.0);
+  ASSERT_FALSE(oracle["warnings"].empty());
+  EXPECT_NE(find<QLabel>(*wiz, "glider_notes")->text().indexOf(QString::fromStdString(oracle["warnings"][0].get<std::string>()).toHtmlEscaped()), -1)
+      << find<QLabel>(*wiz, "glider_notes")->text().toStdString();
   shot(*wiz, "71_glider_ballast");
   const auto& rects = map->labelRects();
   ASSERT_EQ(rects.size(), 2 * oracle["points"].size());

@@ -47,10 +47,10 @@ GliderBallastPage::GliderBallastPage(WizardState& state) : state_(state) {
   map_ = new GliderBallastMap;
   map_->setMinimumHeight(360);
   export_ = new QPushButton(tr("Export work &order (PDF)…"));
-  export_->setObjectName("export_pdf");
+  export_->setObjectName("glider_export_pdf");
   export_->setMinimumHeight(32);
   export_->setToolTip(tr("One A4 page: the glider, the target water, the grams per place, the map and a signature line."));
-  save_status_ = makeErrorLabel("save_status");
+  save_status_ = makeErrorLabel("glider_save_status");
   connect(export_, &QPushButton::clicked, this, [this] {
     const QString path = askExportFile(this, tr("Export the work order"), state_.log_file, "_work_order.pdf", tr("PDF files (*.pdf)"));
     if (path.isEmpty()) return;
@@ -91,8 +91,9 @@ void GliderBallastPage::initializePage() {
   for (const QString& w : in.warnings) notes << tr("Note: %1").arg(w);
   notes_->setText(notes.isEmpty() ? QString() : bullets(notes));
   GliderMapModel m = state_.vehicle ? makeGliderMapModel(*state_.vehicle, state_.glider_plan) : GliderMapModel{};
-  // The bottles' contents were not entered: what they hold afterwards is not known.
-  for (auto& p : m.places) p.after_g = -1.0;
+  // Without the bottles' contents what they hold afterwards is not known.
+  if (state_.mission_installed_kg.size() != (state_.vehicle ? state_.vehicle->points.size() : 0))
+    for (auto& p : m.places) p.after_g = -1.0;
   map_->setModel(m);
 }
 

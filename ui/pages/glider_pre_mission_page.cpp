@@ -7,10 +7,13 @@
 #include <QRadioButton>
 #include <QScrollArea>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "analysis/profile_constants.h"
 #include "seawater/depth_pressure.h"
+#include "common/input_error.h"
+#include "history/store.h"
 #include "widgets/inputs.h"
 #include "wizard/operator_wizard.h"
 
@@ -41,9 +44,13 @@ GliderPreMissionPage::GliderPreMissionPage(WizardState& state) : state_(state) {
   terms_ = new QLabel;
   terms_->setObjectName("terms_used");
   terms_->setWordWrap(true);
+  installed_ = new QLabel;
+  installed_->setObjectName("glider_installed_now");
+  installed_->setWordWrap(true);
   auto* ll = new QVBoxLayout(logBox);
   ll->addWidget(log_answer_);
   ll->addWidget(terms_);
+  ll->addWidget(installed_);
 
   auto* targetBox = new QGroupBox(tr("Target water"));
   kind_log_ = new QRadioButton(tr("The &log's own water at its deepest yo"));
@@ -143,6 +150,7 @@ GliderTargetChoice GliderPreMissionPage::choice() const {
 
 void GliderPreMissionPage::initializePage() {
   loading_ = true;
+  loadInstalled();
   showLogAnswer();
   // The fields start at the log's own deepest water, so a change is typed over it.
   const GliderAnswer def = gliderAnswer(state_, {});
@@ -160,6 +168,43 @@ void GliderPreMissionPage::initializePage() {
   if (!kind_density_->isChecked() && !kind_pt_->isChecked() && !kind_depth_->isChecked()) kind_log_->setChecked(true);
   loading_ = false;
   applyKind();
+}
+
+void GliderPreMissionPage::loadInstalled() {
+  if (!state_.vehicle) return;
+  const auto& pts = state_.vehicle->points;
+  // A glider's import page has no installed fields (its fit needs none), so
+  // what the bottles hold comes from the configuration's latest installed
+  // state in the history: what they held during the mission just analysed.
+  state_.mission_installed_kg.clear();
+  QString source;
+  auto* w = qobject_cast<OperatorWizard*>(wizard());
+  std::optional<InstalledState> st;
+  if (HistoryStore* h = w ? w->history() : nullptr) {
+    try {
+      st = h->latestInstalled(state_.configuration_id, w->now());
+    } catch (const InputError&) {
+      // A configuration not in the history yet (saved at Finish): nothing installed is known.
+    }
+  }
+  if (st) {
+    std::vector<double> kg(pts.size(), 0.0);
+    bool all = true;
+    for (const InstalledPoint& p : st->points) {
+      const auto it = std::find_if(pts.begin(), pts.end(), [&](const AdjustmentPoint& a) { return a.name == p.name; });
+      if (it == pts.end()) all = false;
+      else kg[static_cast<std::size_t>(it - pts.begin())] = p.mass_kg;
+    }
+    if (all) state_.mission_installed_kg = kg;
+    source = tr("history, %1").arg(q(toIsoUtc(st->installed_at)).left(10));
+  }
+  if (state_.mission_installed_kg.size() != pts.size()) {
+    installed_->setText(tr("What the bottles hold now is not in the history: capacities are checked against half-full bottles."));
+    return;
+  }
+  QStringList now;
+  for (std::size_t i = 0; i < pts.size(); ++i) now << QString("%1 %2").arg(q(pts[i].label), massText(state_.mission_installed_kg[i], true));
+  installed_->setText(tr("Installed now (%1): %2.").arg(source, now.join(", ")));
 }
 
 void GliderPreMissionPage::showLogAnswer() {

@@ -34,6 +34,7 @@ class GliderPreMissionPage : public QWizardPage {
 
  private:
   void showLogAnswer();
+  void loadInstalled();
   void applyKind();
   void update();
 
@@ -43,6 +44,7 @@ class GliderPreMissionPage : public QWizardPage {
 
   QLabel* log_answer_;
   QLabel* terms_;
+  QLabel* installed_;
   QRadioButton* kind_log_;
   QRadioButton* kind_density_;
   QRadioButton* kind_pt_;

@@ -60,6 +60,10 @@ GliderAnswer gliderAnswer(const WizardState& s, const GliderTargetChoice& c) {
       a.target = reportTarget(*s.analysis);
     }
     a.report = analysis::toJson(*s.analysis);
+    // What the bottles and rails hold now (the history's installed state),
+    // so the capacities are checked against it; empty = not known.
+    const std::vector<double> installed =
+        s.mission_installed_kg.size() == s.vehicle->points.size() ? s.mission_installed_kg : std::vector<double>{};
     const auto* model = dynamic_cast<const discrepancy::GliderCheckModel*>(s.check_model.get());
     if (model && s.model_check) {
       discrepancy::mergeIntoAnalysisJson(a.report, *s.model_check);
@@ -68,10 +72,10 @@ GliderAnswer gliderAnswer(const WizardState& s, const GliderTargetChoice& c) {
       a.joint = true;
       a.terms_used = g.terms_used;
       a.mass_drift_g_per_h = g.mass_drift_g_per_h;
-      a.plan = planGliderBallast(*s.vehicle, {a.report, {}, std::nullopt});
+      a.plan = planGliderBallast(*s.vehicle, {a.report, installed, std::nullopt});
     } else {
       // The analysis alone: its fitted volume carried to the target.
-      a.plan = planGliderBallast(*s.vehicle, {a.report, {}, a.target});
+      a.plan = planGliderBallast(*s.vehicle, {a.report, installed, a.target});
     }
     a.ok = true;
   } catch (const InputError& e) {

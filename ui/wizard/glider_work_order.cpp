@@ -161,7 +161,9 @@ WorkOrder makeGliderWorkOrder(const WizardState& s, TimePoint now) {
     mp.label = ap->label;
     mp.x_m = ap->position_m.x();
     mp.y_m = ap->position_m.y();
-    mp.installed_kg = NAN;  // the bottles' contents were not entered
+    // What the place holds now, when the history knows it.
+    const auto idx = static_cast<std::size_t>(ap - v.points.data());
+    mp.installed_kg = s.mission_installed_kg.size() == v.points.size() ? s.mission_installed_kg[idx] : NAN;
     const int g = static_cast<int>(std::round(num(pt, "add_g", 0.0)));
     if (g != 0) mp.change.push_back({0.001, g});
     mp.change_kg = g / 1000.0;
