@@ -3171,11 +3171,6 @@
         <translation>Ingen analyse: gå tilbake og importer oppdragets logg.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="173" />
-        <source>The log does not show the glider's net buoyancy: %1</source>
-        <translation>Loggen viser ikke gliderens netto oppdrift: %1</translation>
-    </message>
-    <message>
         <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="177" />
         <source>The analysis (steady-glide fit): add &lt;b&gt;%1&lt;/b&gt; at the log's own deepest water.</source>
         <translation>Analysen (tilpasning av jevn glidning): legg til &lt;b&gt;%1&lt;/b&gt; i loggens eget dypeste vann.</translation>
@@ -3244,6 +3239,21 @@
         <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="207" />
         <source>Installed now (%1): %2.</source>
         <translation>Montert nå (%1): %2.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="219" />
+        <source>The log does not show the glider's net buoyancy: %1. Finish saves the mission to the history; plan the next deployment from a log with steady glides.</source>
+        <translation>Loggen viser ikke gliderens netto oppdrift: %1. Fullfør lagrer oppdraget i historikken; planlegg neste utsetting fra en logg med jevne glidninger.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="295" />
+        <source>Not saved: %1</source>
+        <translation>Ikke lagret: %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="298" />
+        <source>Saved configuration %1: the mission log and its analysis.</source>
+        <translation>Lagret konfigurasjon %1: oppdragsloggen og analysen.</translation>
     </message>
 </context>
 <context>

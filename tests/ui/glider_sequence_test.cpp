@@ -370,6 +370,49 @@ TEST_F(GliderSequence, SeaExplorerSaysWhatItCannotTell) {
   EXPECT_NE(m.note.indexOf("does not tell where the grams go"), -1);
 }
 
+// A log too short for the glide fit: no grams to plan, so the target page is
+// the last one and Finish saves the mission alone.
+TEST_F(GliderSequence, LogWithoutNetBuoyancyFinishesAndSaves) {
+  const std::string short_log = path("short.csv").toStdString();
+  {
+    std::ifstream in(kLog);
+    std::ofstream out(short_log);
+    std::string line;
+    for (int n = 0; n < 40 && std::getline(in, line); ++n) out << line << "\n";
+  }
+  WizardState s = makeSlocumDemoState(AUV_RESOURCE_DIR);
+  s.mode = SessionMode::kPostMission;
+  s.log = std::make_shared<MissionLog>(readInterchangeCsv(short_log));
+  s.log_file = short_log;
+  s.log_format = "mission-log CSV v1";
+  s.log_report = ReadReport{};
+  auto wiz = std::make_unique<OperatorWizard>(std::move(s));
+  wiz->setClock(fixedNow);
+  wiz->setAutosaveEnabled(false);
+  wiz->resize(1000, 760);
+  wiz->show();
+  wiz->next();
+  wiz->next();
+  clickNext(*wiz);
+  clickNext(*wiz);
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kModelCheck);
+  auto* m = qobject_cast<ModelCheckPage*>(wiz->currentPage());
+  waitFor([m] { return m->job().running(); });
+  clickNext(*wiz);
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kGliderPreMission);
+  ASSERT_FALSE(wiz->state().analysis->mass_to_add_g.known);
+  EXPECT_NE(find<QLabel>(*wiz, "log_answer")->text().indexOf("does not show the glider's net buoyancy"), -1);
+  EXPECT_EQ(wiz->currentPage()->nextId(), -1);
+  EXPECT_TRUE(wiz->currentPage()->isComplete());
+  QTest::mouseClick(wiz->button(QWizard::FinishButton), Qt::LeftButton);
+  QApplication::processEvents();
+  EXPECT_EQ(wiz->result(), QDialog::Accepted);
+  HistoryStore store(path("history.sqlite").toStdString());
+  int missions = 0;
+  for (const auto& e : store.history("49-1-1")) missions += e.kind == EventKind::kMission;
+  EXPECT_EQ(missions, 1);
+}
+
 TEST_F(GliderSequence, NorwegianWordsOnTheGliderPagesAndSteps) {
   ASSERT_TRUE(installTranslation(QLocale(QLocale::NorwegianBokmal)));
   {

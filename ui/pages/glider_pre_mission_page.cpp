@@ -14,6 +14,7 @@
 #include "seawater/depth_pressure.h"
 #include "common/input_error.h"
 #include "history/store.h"
+#include "wizard/history_save.h"
 #include "widgets/inputs.h"
 #include "wizard/operator_wizard.h"
 
@@ -215,7 +216,9 @@ void GliderPreMissionPage::showLogAnswer() {
   }
   const analysis::AnalysisReport& r = *state_.analysis;
   if (!r.mass_to_add_g.known) {
-    log_answer_->setText(tr("The log does not show the glider's net buoyancy: %1").arg(q(r.mass_to_add_g.why_not)));
+    log_answer_->setText(tr("The log does not show the glider's net buoyancy: %1. Finish saves the mission to the history; "
+                            "plan the next deployment from a log with steady glides.")
+                             .arg(q(r.mass_to_add_g.why_not)));
     terms_->clear();
     return;
   }
@@ -277,17 +280,30 @@ void GliderPreMissionPage::update() {
   if (was != answer_.ok) emit completeChanged();
 }
 
-bool GliderPreMissionPage::isComplete() const { return answer_.ok; }
+bool GliderPreMissionPage::isComplete() const { return answer_.ok || saveOnly(); }
 
 void GliderPreMissionPage::cleanupPage() {}
 
 bool GliderPreMissionPage::validatePage() {
+  if (saveOnly()) {
+    auto* w = qobject_cast<OperatorWizard*>(wizard());
+    HistoryStore* store = w ? w->history() : nullptr;
+    if (!store) return !w || w->confirmCloseWithoutHistory();
+    try {
+      saveMissionToHistory(*store, state_, w->now());
+    } catch (const InputError& e) {
+      error_->setText(tr("Not saved: %1").arg(q(e.what())));
+      return false;
+    }
+    w->reportSaved(tr("Saved configuration %1: the mission log and its analysis.").arg(q(state_.configuration_id)));
+    return true;
+  }
   update();
   if (!answer_.ok) return false;
   state_.glider_plan = answer_.plan;
   return true;
 }
 
-int GliderPreMissionPage::nextId() const { return OperatorWizard::kGliderBallast; }
+int GliderPreMissionPage::nextId() const { return saveOnly() ? -1 : OperatorWizard::kGliderBallast; }
 
 }  // namespace auv::ui

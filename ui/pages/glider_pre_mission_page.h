@@ -29,6 +29,10 @@ class GliderPreMissionPage : public QWizardPage {
   bool isComplete() const override;
   int nextId() const override;
 
+  // The log does not show the glider's net buoyancy: nothing to plan, this
+  // page is the last one and Finish saves the mission alone.
+  bool saveOnly() const { return !state_.analysis || !state_.analysis->mass_to_add_g.known; }
+
   GliderTargetChoice choice() const;
   const GliderAnswer& answer() const { return answer_; }
 
