@@ -5094,4 +5094,466 @@
             <translation>kraft i lengderetningen</translation>
         </message>
     </context>
+    <context>
+        <name>auv::ui::GliderPreMissionPage</name>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="24" />
+            <source>%1 ± %2 g</source>
+            <translation>%1 ± %2 g</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="24" />
+            <source>%1 g</source>
+            <translation>%1 g</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="34" />
+            <source>Glider: the next deployment's water</source>
+            <translation>Glider: vannet ved neste utsetting</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="35" />
+            <source>What the log showed, and the water where the glider must be neutral with its pump at zero.</source>
+            <translation>Hva loggen viste, og vannet der glideren skal være nøytral med pumpen på null.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="37" />
+            <source>What the log showed</source>
+            <translation>Hva loggen viste</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="48" />
+            <source>Target water</source>
+            <translation>Målvann</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="49" />
+            <source>The &amp;log's own water at its deepest yo</source>
+            <translation>&amp;Loggens eget vann i det dypeste yo-et</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="51" />
+            <source>Neutral where the recorded mission went deepest: its CTD's temperature and salinity there.</source>
+            <translation>Nøytral der det loggede oppdraget gikk dypest: CTD-ens temperatur og saltholdighet der.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="52" />
+            <source>A densit&amp;y</source>
+            <translation>En &amp;tetthet</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="54" />
+            <source>The in-situ density of the next deployment's water (pressure and temperature from the log's deepest water).</source>
+            <translation>In situ-tettheten til vannet ved neste utsetting (trykk og temperatur fra loggens dypeste vann).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="55" />
+            <source>&amp;Pressure and temperature</source>
+            <translation>Try&amp;kk og temperatur</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="57" />
+            <source>Pressure and temperature of the next deployment's water; with a salinity the density follows from EOS-80, else the log's salinity is used.</source>
+            <translation>Trykk og temperatur i vannet ved neste utsetting; med saltholdighet følger tettheten av EOS-80, ellers brukes loggens saltholdighet.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="59" />
+            <source>A dept&amp;h in the log's CTD profile</source>
+            <translation>Et &amp;dyp i loggens CTD-profil</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="61" />
+            <source>Temperature, salinity and pressure at this depth as the log's own CTD measured them.</source>
+            <translation>Temperatur, saltholdighet og trykk på dette dypet slik loggens egen CTD målte dem.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="70" />
+            <source>In-situ density of the target water, kg/m³ (990 .. 1080).</source>
+            <translation>In situ-tetthet i målvannet, kg/m³ (990 .. 1080).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="71" />
+            <source>Pressure where the glider must be neutral, dbar.</source>
+            <translation>Trykket der glideren skal være nøytral, dbar.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="72" />
+            <source>Water temperature there, °C.</source>
+            <translation>Vanntemperaturen der, °C.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="74" />
+            <source>Practical salinity there; leave it at 'not given' to use the log's own salinity.</source>
+            <translation>Praktisk saltholdighet der; la den stå på «ikke oppgitt» for å bruke loggens egen saltholdighet.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="75" />
+            <source>not given</source>
+            <translation>ikke oppgitt</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="76" />
+            <source>A depth the log reached: its CTD there gives T, S and p.</source>
+            <translation>Et dyp loggen nådde: CTD-en der gir T, S og p.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="86" />
+            <source>&amp;Density:</source>
+            <translation>T&amp;etthet:</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="88" />
+            <source>P&amp;ressure:</source>
+            <translation>T&amp;rykk:</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="89" />
+            <source>&amp;Temperature:</source>
+            <translation>&amp;Temperatur:</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="90" />
+            <source>&amp;Salinity:</source>
+            <translation>&amp;Saltholdighet:</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="92" />
+            <source>D&amp;epth:</source>
+            <translation>D&amp;yp:</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="167" />
+            <source>No analysis: go back and import the mission's log.</source>
+            <translation>Ingen analyse: gå tilbake og importer oppdragets logg.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="177" />
+            <source>The analysis (steady-glide fit): add &lt;b&gt;%1&lt;/b&gt; at the log's own deepest water.</source>
+            <translation>Analysen (tilpasning av jevn glidning): legg til &lt;b&gt;%1&lt;/b&gt; i loggens eget dypeste vann.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="181" />
+            <source>The model check, fitted jointly with its terms: add &lt;b&gt;%1&lt;/b&gt;.</source>
+            <translation>Modellsjekken, tilpasset sammen med leddene sine: legg til &lt;b&gt;%1&lt;/b&gt;.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="187" />
+            <source>%1 = %2 ± %3 %4 (profile %5)</source>
+            <translation>%1 = %2 ± %3 %4 (profil %5)</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="193" />
+            <source>The model check did not run: the answer uses the profile's compressibility and thermal expansion.</source>
+            <translation>Modellsjekken ble ikke kjørt: svaret bruker profilens kompressibilitet og termiske utvidelse.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="194" />
+            <source>The model check found no missing physics: the answer uses the profile's constants.</source>
+            <translation>Modellsjekken fant ingen manglende fysikk: svaret bruker profilens konstanter.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="195" />
+            <source>Terms the answer uses: %1.</source>
+            <translation>Ledd svaret bruker: %1.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="197" />
+            <source>Mass drift %1 g/h: the answer is the mass at the end of the log; add the drift until the deployment day.</source>
+            <translation>Massedrift %1 g/t: svaret er massen ved loggens slutt; legg til driften fram til utsettingsdagen.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="218" />
+            <source>default: %1</source>
+            <translation>standard: %1</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="219" />
+            <source>Target: %1 kg/m³ at %2 dbar, %3 °C (%4).</source>
+            <translation>Mål: %1 kg/m³ ved %2 dbar, %3 °C (%4).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="225" />
+            <source>For neutral with the pump at zero in this water: add &lt;b&gt;%1&lt;/b&gt;%2. Next: where the grams go.</source>
+            <translation>For nøytral med pumpen på null i dette vannet: legg til &lt;b&gt;%1&lt;/b&gt;%2. Neste: hvor grammene skal.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="227" />
+            <source> (remove %1 g)</source>
+            <translation> (ta ut %1 g)</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="199" />
+            <source>history, %1</source>
+            <translation>historikk, %1</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="202" />
+            <source>What the bottles hold now is not in the history: capacities are checked against half-full bottles.</source>
+            <translation>Hva flaskene inneholder nå, står ikke i historikken: kapasitetene sjekkes mot halvfulle flasker.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="207" />
+            <source>Installed now (%1): %2.</source>
+            <translation>Montert nå (%1): %2.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="219" />
+            <source>The log does not show the glider's net buoyancy: %1. Finish saves the mission to the history; plan the next deployment from a log with steady glides.</source>
+            <translation>Loggen viser ikke gliderens netto oppdrift: %1. Fullfør lagrer oppdraget i historikken; planlegg neste utsetting fra en logg med jevne glidninger.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="295" />
+            <source>Not saved: %1</source>
+            <translation>Ikke lagret: %1</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_pre_mission_page.cpp" line="298" />
+            <source>Saved configuration %1: the mission log and its analysis.</source>
+            <translation>Lagret konfigurasjon %1: oppdragsloggen og analysen.</translation>
+        </message>
+    </context>
+    <context>
+        <name>auv::ui::GliderBallastPage</name>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="32" />
+            <source>Glider: where the grams go</source>
+            <translation>Glider: hvor grammene skal</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="33" />
+            <source>What to change on the glider for the next deployment's water. Finish saves the mission to the history.</source>
+            <translation>Hva som skal endres på glideren for vannet ved neste utsetting. Fullfør lagrer oppdraget i historikken.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="49" />
+            <source>Export work &amp;order (PDF)…</source>
+            <translation>Eksporter &amp;arbeidsordre (PDF)…</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="52" />
+            <source>One A4 page: the glider, the target water, the grams per place, the map and a signature line.</source>
+            <translation>Én A4-side: glideren, målvannet, gram per sted, kartet og en signaturlinje.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="55" />
+            <source>Export the work order</source>
+            <translation>Eksporter arbeidsordren</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="55" />
+            <source>PDF files (*.pdf)</source>
+            <translation>PDF-filer (*.pdf)</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="90" />
+            <source>Cannot tell: %1</source>
+            <translation>Kan ikke si: %1</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="91" />
+            <source>Note: %1</source>
+            <translation>Merk: %1</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="115" />
+            <source>Not saved: %1</source>
+            <translation>Ikke lagret: %1</translation>
+        </message>
+        <message>
+            <location filename="../../ui/pages/glider_ballast_page.cpp" line="118" />
+            <source>Saved configuration %1: the mission log, its analysis and the glider's ballast answer.</source>
+            <translation>Lagret konfigurasjon %1: oppdragsloggen, analysen og gliderens ballastsvar.</translation>
+        </message>
+    </context>
+    <context>
+        <name>auv::ui::GliderBallastMap</name>
+        <message>
+            <location filename="../../ui/widgets/glider_ballast_map.cpp" line="61" />
+            <source>Side view (bow to the right, keel down)</source>
+            <translation>Sett fra siden (baugen til høyre, kjølen ned)</translation>
+        </message>
+        <message>
+            <location filename="../../ui/widgets/glider_ballast_map.cpp" line="62" />
+            <source>Top view (bow to the right, starboard down)</source>
+            <translation>Sett ovenfra (baugen til høyre, styrbord ned)</translation>
+        </message>
+        <message>
+            <location filename="../../ui/widgets/glider_ballast_map.cpp" line="149" />
+            <source>$C_VBD %1 → %2</source>
+            <translation>$C_VBD %1 → %2</translation>
+        </message>
+        <message>
+            <location filename="../../ui/widgets/glider_ballast_map.cpp" line="153" />
+            <source>, $C_PITCH %1 → %2</source>
+            <translation>, $C_PITCH %1 → %2</translation>
+        </message>
+        <message>
+            <location filename="../../ui/widgets/glider_ballast_map.cpp" line="155" />
+            <source>The log does not tell where the grams go on this glider (see the notes).</source>
+            <translation>Loggen sier ikke hvor grammene skal på denne glideren (se merknadene).</translation>
+        </message>
+    </context>
+    <context>
+        <name>auv::ui::GliderInstructions</name>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="26" />
+            <source>%1: add %2 g of lead shot (holds at most %3 g).</source>
+            <translation>%1: legg i %2 g blyhagl (rommer høyst %3 g).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="27" />
+            <source>%1: take out %2 g of lead shot (holds at most %3 g).</source>
+            <translation>%1: ta ut %2 g blyhagl (rommer høyst %3 g).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="32" />
+            <source>Bow bottles %1 g, aft bottles %2 g: %3 g in all, in %4 g steps.</source>
+            <translation>Baugflasker %1 g, akterflasker %2 g: %3 g i alt, i trinn på %4 g.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="39" />
+            <source>Roll %1° at zero roll command: no wing-rail change.</source>
+            <translation>Rull %1° ved null rullkommando: ingen endring på vingeskinnene.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="40" />
+            <source>Roll %1° at zero roll command: move %2 g from the %3 (included above).</source>
+            <translation>Rull %1° ved null rullkommando: flytt %2 g fra %3 (med ovenfor).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="44" />
+            <source>starboard wing rail to the port wing rail</source>
+            <translation>styrbord vingeskinne til babord vingeskinne</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="45" />
+            <source>port wing rail to the starboard wing rail</source>
+            <translation>babord vingeskinne til styrbord vingeskinne</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="49" />
+            <source>Pitch: level flight at pump zero needs the battery at %1 mm (centre of travel %2 mm); the bow/aft split above brings it back to the centre.</source>
+            <translation>Stamp: plan flukt med pumpen på null krever batteriet på %1 mm (midt i vandringen %2 mm); fordelingen baug/akter ovenfor bringer det tilbake til midten.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="59" />
+            <source>Lead: no change (the VBD takes it).</source>
+            <translation>Bly: ingen endring (VBD-en tar det).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="60" />
+            <source>Lead: add %1 g (%2 cm³ of lead).</source>
+            <translation>Bly: legg til %1 g (%2 cm³ bly).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="61" />
+            <source>Lead: take off %1 g (%2 cm³ of lead).</source>
+            <translation>Bly: ta av %1 g (%2 cm³ bly).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="62" />
+            <source>Set $C_VBD from %1 to %2 (VBD %3 cm³).</source>
+            <translation>Sett $C_VBD fra %1 til %2 (VBD %3 cm³).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="70" />
+            <source>Set $C_PITCH from %1 to %2 (pitch mass for level flight at %3 mm).</source>
+            <translation>Sett $C_PITCH fra %1 til %2 (stampmasse for plan flukt på %3 mm).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="77" />
+            <source>Keep $C_PITCH at %1: the log's pitch trim gives %2, outside PITCH_MIN .. PITCH_MAX (%3 .. %4); check the pitch trim on a test dive.</source>
+            <translation>Behold $C_PITCH på %1: loggens stamptrim gir %2, utenfor PITCH_MIN .. PITCH_MAX (%3 .. %4); sjekk stamptrimmen på et prøvedykk.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="85" />
+            <source>Basis: %1.</source>
+            <translation>Grunnlag: %1.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="95" />
+            <source>%1 ± %2 g</source>
+            <translation>%1 ± %2 g</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="95" />
+            <source>%1 g</source>
+            <translation>%1 g</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="96" />
+            <source>Mass to add %1 for neutral with the pump at zero in %2 kg/m³ water at %3 dbar, %4 °C.</source>
+            <translation>Masse å legge til %1 for nøytral med pumpen på null i vann på %2 kg/m³ ved %3 dbar, %4 °C.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="101" />
+            <source>Target water: %1.</source>
+            <translation>Målvann: %1.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="108" />
+            <source>Change the glider's mass by %1 g at its ballast places so that it stays level.</source>
+            <translation>Endre gliderens masse med %1 g på ballaststedene slik at den holder seg plan.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="110" />
+            <source>Linear battery for level flight at pump zero: %1 mm.</source>
+            <translation>Lineært batteri for plan flukt med pumpen på null: %1 mm.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="127" />
+            <source>From the log: %1</source>
+            <translation>Fra loggen: %1</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="131" />
+            <source>Place</source>
+            <translation>Sted</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="131" />
+            <source>Change</source>
+            <translation>Endring</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="131" />
+            <source>Pieces</source>
+            <translation>Stykker</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="131" />
+            <source>Holds at most</source>
+            <translation>Rommer høyst</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="131" />
+            <source>Note</source>
+            <translation>Merknad</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="138" />
+            <source>%1 × 1 g lead shot</source>
+            <translation>%1 × 1 g blyhagl</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="139" />
+            <source>%1 g lead</source>
+            <translation>%1 g bly</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="144" />
+            <source>Neutral with the pump at zero in the water above, within ± %1 g (1 σ).</source>
+            <translation>Nøytral med pumpen på null i vannet ovenfor, innenfor ± %1 g (1 σ).</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="145" />
+            <source>Neutral with the pump at zero in the water above.</source>
+            <translation>Nøytral med pumpen på null i vannet ovenfor.</translation>
+        </message>
+        <message>
+            <location filename="../../ui/wizard/glider_work_order.cpp" line="147" />
+            <source>Cannot tell: %1</source>
+            <translation>Kan ikke si: %1</translation>
+        </message>
+    </context>
 </TS>

@@ -354,11 +354,12 @@ TEST_F(PostMission, GliderAnalysisAndModelCheckFindHullCompressibility) {
     for (const auto& e : store.history("49-1-1")) missions += e.kind == EventKind::kMission;
     EXPECT_EQ(missions, 1);
   } else {
-    EXPECT_EQ(m->nextId(), OperatorWizard::kPreMission);
+    // A glider goes on to its own target-water page (glider_sequence_test).
+    EXPECT_EQ(m->nextId(), OperatorWizard::kGliderPreMission);
     // Next: the accepted term becomes the configuration's vehicle model...
     const VehicleProfile base = *wiz->state().vehicle;  // a copy: the state's is replaced
     wiz->next();
-    ASSERT_EQ(wiz->currentId(), OperatorWizard::kPreMission);
+    ASSERT_EQ(wiz->currentId(), OperatorWizard::kGliderPreMission);
     const nlohmann::json& vm = wiz->state().model_profile;
     ASSERT_TRUE(vm.is_object());
     ASSERT_EQ(vm["model_check"]["accepted"].size(), 1u);

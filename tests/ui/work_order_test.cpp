@@ -184,8 +184,9 @@ TEST_F(WorkOrders, RenderPagesSavesEveryDemoPageAndTheWorkOrders) {
   const QString out = path("wizard");
   const RenderedPages r = renderDemoPages(AUV_RESOURCE_DIR, out, path("scratch"), fixedNow());
   EXPECT_EQ(r.error, "");
-  // HUGIN: 5 pages, Slocum: 5, post to pre mission: 7; 3 work orders as PNG and PDF.
-  EXPECT_EQ(r.files.size(), 23) << r.files.join("\n").toStdString();
+  // HUGIN: 5 pages, Slocum: 5, post to pre mission: 7, glider post to pre
+  // mission: 3; 4 work orders as PNG and PDF.
+  EXPECT_EQ(r.files.size(), 28) << r.files.join("\n").toStdString();
   for (const QString& f : r.files) {
     ASSERT_TRUE(QFileInfo::exists(f)) << f.toStdString();
     if (!f.endsWith(".png")) continue;
@@ -198,7 +199,7 @@ TEST_F(WorkOrders, RenderPagesSavesEveryDemoPageAndTheWorkOrders) {
     EXPECT_LT(colourFraction(img, img.pixelColor(0, 0), 4), 0.97) << f.toStdString() << " is blank";
   }
   for (const char* name : {"05_first_mission_result.png", "14_slocum_result.png", "22_deviation_plots.png",
-                           "26_summary.png", "27_work_order.pdf"}) {
+                           "26_summary.png", "27_work_order.pdf", "32_glider_ballast.png", "33_glider_work_order.pdf"}) {
     EXPECT_TRUE(r.files.contains(out + "/" + name)) << name;
   }
 }

@@ -170,6 +170,8 @@ int ModelCheckPage::nextId() const {
   // The pre-mission page comes from another part of the wizard; until it is
   // there, this page ends the post-mission sequence.
   const QWizard* w = wizard();
+  // Gliders: the target water and grams per bottle (or lead and C_VBD).
+  if (state_.isGlider() && w && w->page(OperatorWizard::kGliderPreMission)) return OperatorWizard::kGliderPreMission;
   return w && w->page(OperatorWizard::kPreMission) ? OperatorWizard::kPreMission : -1;
 }
 
@@ -184,6 +186,7 @@ void ModelCheckPage::initializePage() {
   }
   outcome_ = ModelCheckOutcome{};
   state_.model_check.reset();
+  state_.check_model.reset();
   showResult();
   if (!state_.log || !state_.vehicle) {
     status_->setText(tr("No log imported: go back to the import page."));
@@ -211,6 +214,7 @@ void ModelCheckPage::onFinished(const ModelCheckOutcome& out) {
   outcome_ = out;
   if (out.ok && out.result && out.log == state_.log) {
     state_.model_check = out.result;
+    state_.check_model = out.model;
     // Choices made on this log stay; a resumed session brings its own; else
     // the terms the check accepted are ticked.
     std::vector<std::string> kept;

@@ -112,11 +112,14 @@ WeightMapLayout drawWeightMap(QPainter& p, const QRectF& area, const WeightMapMo
     const auto& pt = model.points[i];
     const bool g = model.grams;
     const double after = pt.installed_kg + pt.change_kg;
-    const QString amounts = g ? QString("%1 → %2").arg(std::round(pt.installed_kg * 1000.0), 0, 'f', 0)
+    // installed_kg NaN: what the place holds is not known (a glider's bottles).
+    const QString amounts = !std::isfinite(pt.installed_kg) ? QString()
+                          : g ? QString("%1 → %2").arg(std::round(pt.installed_kg * 1000.0), 0, 'f', 0)
                                     .arg(std::round(after * 1000.0), 0, 'f', 0)
                               : QString("%1 → %2").arg(pt.installed_kg, 0, 'f', 1).arg(after, 0, 'f', 1);
     LabelSlot& l = labels[i];
-    l.text = QString("%1: %2 (%3)").arg(QString::fromStdString(pt.label), massText(pt.change_kg, g, true), amounts);
+    l.text = amounts.isEmpty() ? QString("%1: %2").arg(QString::fromStdString(pt.label), massText(pt.change_kg, g, true))
+                               : QString("%1: %2 (%3)").arg(QString::fromStdString(pt.label), massText(pt.change_kg, g, true), amounts);
     l.width = fm.horizontalAdvance(l.text) + 6;
     l.x = std::clamp(cx + pt.x_m * sx - l.width / 2, 2.0, std::max(2.0, W - 2.0 - l.width));
     l.above = across[i] < 0;

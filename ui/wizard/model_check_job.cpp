@@ -26,7 +26,8 @@ void ModelCheckJob::start(std::shared_ptr<const MissionLog> log, VehicleProfile 
     ModelCheckOutcome out;
     out.log = log;
     try {
-      const std::unique_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(*log, vehicle, dir, setup);
+      const std::shared_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(*log, vehicle, dir, setup);
+      out.model = model;
       out.description = model->description();
       out.result = discrepancy::runModelCheck(*model, options);
       out.overlay = discrepancy::simulationOverlay(*model, *out.result, *log);

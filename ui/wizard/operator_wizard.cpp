@@ -18,6 +18,8 @@
 #include "pages/crane_weighing_page.h"
 #include "pages/deviation_plots_page.h"
 #include "pages/first_mission_result_page.h"
+#include "pages/glider_ballast_page.h"
+#include "pages/glider_pre_mission_page.h"
 #include "pages/log_import_page.h"
 #include "pages/model_check_page.h"
 #include "pages/pre_mission_page.h"
@@ -68,6 +70,8 @@ OperatorWizard::OperatorWizard(WizardState state, QWidget* parent)
   setPage(kAdjustment, new AdjustmentPage(state_));
   setPage(kSummary, new SummaryPage(state_));
   setPage(kModelCheck, new ModelCheckPage(state_));
+  setPage(kGliderPreMission, new GliderPreMissionPage(state_));
+  setPage(kGliderBallast, new GliderBallastPage(state_));
   setStartId(kStart);
 
   connect(this, &QWizard::helpRequested, this, &OperatorWizard::showHelp);

@@ -21,6 +21,7 @@ class HelpDialog;
 //     first mission, AUV:    crane weighing -> water -> result
 //     first mission, glider: tank weighing -> roll test -> result
 //     post mission:          log import -> deviation plots -> model check -> pre mission
+//                            (gliders: -> glider target water -> where the grams go)
 //     pre mission:           pre mission (next water, policy) -> adjustment -> summary
 // Finish saves the session to the history in one transaction.
 class OperatorWizard : public QWizard {
@@ -39,7 +40,10 @@ class OperatorWizard : public QWizard {
     kModelCheck,
     kPreMission,
     kAdjustment,
-    kSummary
+    kSummary,
+    // Gliders after the model check (appended: saved sessions keep their ids).
+    kGliderPreMission,
+    kGliderBallast
   };
 
   explicit OperatorWizard(WizardState state, QWidget* parent = nullptr);

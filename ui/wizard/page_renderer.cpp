@@ -13,7 +13,9 @@
 #include "history/store.h"
 #include "pages/log_import_page.h"
 #include "pages/model_check_page.h"
+#include "missionlog/interchange_csv.h"
 #include "wizard/demo_state.h"
+#include "wizard/glider_work_order.h"
 #include "wizard/operator_wizard.h"
 #include "wizard/pre_mission_inputs.h"
 #include "wizard/work_order.h"
@@ -127,6 +129,24 @@ bool postAndPreMission(Walk& w, const std::string& res, const QString& scratch, 
   }
 }
 
+// A Slocum after a mission (the bundled model-check log), on to the grams
+// per bottle for the log's own deepest water.
+bool gliderPostAndPreMission(Walk& w, const std::string& res, TimePoint now) {
+  WizardState s = makeSlocumDemoState(res);
+  s.mode = SessionMode::kPostMission;
+  s.log_file = res + "/examples/slocum_g2_model-check_compressibility.csv";
+  s.log = std::make_shared<MissionLog>(readInterchangeCsv(s.log_file));
+  s.log_format = "mission-log CSV v1";
+  s.log_report = ReadReport{};
+  OperatorWizard wiz(std::move(s));
+  prepare(wiz, now);
+  using W = OperatorWizard;
+  return w.next(wiz, W::kVehicle) && w.next(wiz, W::kLogImport) && w.next(wiz, W::kDeviationPlots) &&
+         w.next(wiz, W::kModelCheck) && w.shot(wiz, "30_model_check_slocum") && w.next(wiz, W::kGliderPreMission) &&
+         w.shot(wiz, "31_glider_pre_mission") && w.next(wiz, W::kGliderBallast) && w.shot(wiz, "32_glider_ballast") &&
+         w.workOrder(makeGliderWorkOrder(wiz.state(), now), "33_glider_work_order");
+}
+
 }  // namespace
 
 RenderedPages renderDemoPages(const std::string& resource_dir, const QString& out_dir, const QString& scratch_dir,
@@ -155,7 +175,9 @@ RenderedPages renderDemoPages(const std::string& resource_dir, const QString& ou
       HistoryStore store(post.toStdString());
       seedDemoHistory(store, resource_dir, now - std::chrono::days(10));
     }
-    postAndPreMission(walk, resource_dir, scratch_dir, now);
+    if (!postAndPreMission(walk, resource_dir, scratch_dir, now)) return result;
+    freshHistory("history-glider.sqlite");
+    gliderPostAndPreMission(walk, resource_dir, now);
   } catch (const InputError& e) {
     walk.fail(QString::fromStdString(e.what()));
   }

@@ -8,6 +8,7 @@
 
 #include "analysis/analysis_report.h"
 #include "discrepancy/model_check.h"
+#include "discrepancy/vehicle_check.h"
 #include "firstmission/first_mission_report.h"
 #include "firstmission/hugin_first_mission.h"
 #include "missionlog/mission_log.h"
@@ -59,6 +60,9 @@ struct WizardState {
   std::optional<analysis::AnalysisReport> analysis;
   std::optional<discrepancy::ModelCheckResult> model_check;
   std::vector<std::string> accepted_terms;
+  // The check model the result belongs to (gliders: the joint mass to add
+  // for another target water is computed from it; not saved).
+  std::shared_ptr<const discrepancy::CheckModel> check_model;
   // The configuration's vehicle model: the profile JSON with the terms
   // accepted so far (discrepancy/profile_update.h). `history_model` is what
   // the history had when the configuration was picked; `model_profile` adds
@@ -74,6 +78,11 @@ struct WizardState {
   std::optional<PreMissionPlan> plan;
   std::vector<bool> checklist_done;
   std::vector<double> actually_installed_kg;
+
+  // Gliders, pre mission: the answer for the chosen target water
+  // (planGliderBallast JSON: grams per bottle, or lead and C_VBD), null until
+  // the glider pre-mission page has one.
+  nlohmann::json glider_plan;
 
   std::optional<FirstMissionReport> report;
   std::string last_error;
