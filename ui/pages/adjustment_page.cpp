@@ -60,7 +60,7 @@ AdjustmentPage::AdjustmentPage(WizardState& state) : state_(state) {
   setSubTitle(tr("Do the steps, tick each one, then enter what is actually in each point if it differs."));
 
   map_ = new WeightMapWidget;
-  map_->setMinimumHeight(170);
+  map_->setMinimumHeight(160);
 
   prediction_ = new QTableWidget(4, 5);
   prediction_->setObjectName("prediction");
