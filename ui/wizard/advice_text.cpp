@@ -157,29 +157,28 @@ QString explainPoint(const std::vector<std::string>& a) {
 QString bandUnreachable(const std::vector<std::string>& a) {
   if (a.size() < 7) return {};
   auto q = [](const std::string& s) { return QString::fromStdString(s); };
-  auto t = [](const char* s) { return QCoreApplication::translate("Advice", s); };
   QString s;
   if (a[0] == "net buoyancy")
-    s = t("The net buoyancy band %1 to %2 cannot be reached with this kit; best %3").arg(q(a[1]), q(a[2]), q(a[3]));
+    s = QCoreApplication::translate("Advice", "The net buoyancy band %1 to %2 cannot be reached with this kit; best %3").arg(q(a[1]), q(a[2]), q(a[3]));
   else if (a[0] == "pitch")
-    s = t("The pitch band ±%1 cannot be reached with this kit (at rest); best %2").arg(q(a[1]), q(a[3]));
+    s = QCoreApplication::translate("Advice", "The pitch band ±%1 cannot be reached with this kit (at rest); best %2").arg(q(a[1]), q(a[3]));
   else if (a[6] == "pitch_ok")
-    s = t("The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2").arg(q(a[1]), q(a[3]));
+    s = QCoreApplication::translate("Advice", "The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2").arg(q(a[1]), q(a[3]));
   else
-    s = t("The roll band ±%1 cannot be reached with this kit; best %2").arg(q(a[1]), q(a[3]));
+    s = QCoreApplication::translate("Advice", "The roll band ±%1 cannot be reached with this kit; best %2").arg(q(a[1]), q(a[3]));
   if (a.size() >= 10)
-    s += (a[9] == "inside" ? t("; flying level at %1 m/s it pitches %2°, inside the band")
-                           : t("; flying level at %1 m/s it pitches %2°, outside the band"))
+    s += (a[9] == "inside" ? QCoreApplication::translate("Advice", "; flying level at %1 m/s it pitches %2°, inside the band")
+                           : QCoreApplication::translate("Advice", "; flying level at %1 m/s it pitches %2°, outside the band"))
              .arg(q(a[7]), q(a[8]));
   if (a[4] == "out_of_reach")
-    s += t("; out of reach whatever the piece sizes: the points' capacities, the installed pieces and the higher "
+    s += QCoreApplication::translate("Advice", "; out of reach whatever the piece sizes: the points' capacities, the installed pieces and the higher "
            "priorities limit it");
   else if (a[4] == "piece")
-    s += t("; a %1 piece would reach it").arg(q(a[5]));
+    s += QCoreApplication::translate("Advice", "; a %1 piece would reach it").arg(q(a[5]));
   else if (a[4] == "none_tried")
-    s += t("; no single extra piece size tried (%1) would reach it").arg(q(a[5]));
+    s += QCoreApplication::translate("Advice", "; no single extra piece size tried (%1) would reach it").arg(q(a[5]));
   else if (a[4] == "none_tried_undecided")
-    s += t("; no single extra piece size tried (%1) would reach it (some were not searched to the end)").arg(q(a[5]));
+    s += QCoreApplication::translate("Advice", "; no single extra piece size tried (%1) would reach it (some were not searched to the end)").arg(q(a[5]));
   return s + ".";
 }
 
