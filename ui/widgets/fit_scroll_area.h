@@ -4,6 +4,7 @@
 // (a 1366 x 768 screen) does it scroll. (QScrollArea's own resizing follows
 // the content's preferred height when it wraps words, so it would scroll
 // where the page fits.)
+#include <QLayout>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <algorithm>
@@ -33,10 +34,23 @@ class FitScrollArea : public QScrollArea {
     QWidget* w = widget();
     if (!w) return;
     const int bar = verticalScrollBar()->sizeHint().width();
-    const int min_h = w->minimumSizeHint().height();
-    const bool scrolls = min_h > maximumViewportSize().height();
-    const int width = maximumViewportSize().width() - (scrolls ? bar : 0);
-    w->resize(width, std::max(min_h, maximumViewportSize().height()));
+    const QSize view = maximumViewportSize();
+    int width = view.width();
+    int min_h = minimumHeightAt(w, width);
+    if (min_h > view.height()) {  // it scrolls: the bar takes its width
+      width -= bar;
+      min_h = minimumHeightAt(w, width);
+    }
+    w->resize(width, std::max(min_h, view.height()));
+  }
+
+  // The height the page needs at `width`: word-wrapped labels need more
+  // lines when narrow, which the plain minimum size hint does not know (the
+  // layout would then overlap its widgets).
+  static int minimumHeightAt(QWidget* w, int width) {
+    int h = w->minimumSizeHint().height();
+    if (QLayout* l = w->layout(); l && l->hasHeightForWidth()) h = std::max(h, l->minimumHeightForWidth(width));
+    return h;
   }
 };
 
