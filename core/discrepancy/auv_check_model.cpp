@@ -9,6 +9,7 @@
 #include "analysis/series_tools.h"
 #include "common/input_error.h"
 #include "common/units.h"
+#include "discrepancy/check_messages.h"
 #include "discrepancy/log_features.h"
 #include "discrepancy/savitzky_golay.h"
 #include "seawater/seawater.h"
@@ -573,9 +574,6 @@ double AuvCheckModel::cgY(const Params& p) const {
   return sim::flownMass(model_, L.extra_masses, std::nullopt, L.error, 0.0).r_g_m.y();
 }
 
-std::string AuvCheckModel::description() const {
-  return "AUV rigid-body model of core/sim (Fossen form) on smoothed logged states; simulation: replay of the logged "
-         "commands through the model's autopilot; ballast state: net buoyancy and CG x/y";
-}
+Message AuvCheckModel::description() const { return Message(msg::kModelAuv); }
 
 }  // namespace auv::discrepancy

@@ -86,7 +86,7 @@ class AuvCheckModel final : public CheckModel {
   bool hasCg() const override { return true; }
   double cgX(const Params& p) const override;
   double cgY(const Params& p) const override;
-  std::string description() const override;
+  Message description() const override;
   std::vector<std::string> notes() const override { return notes_; }
 
   const TermValues& baseline() const { return baseline_; }

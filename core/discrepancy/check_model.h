@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "common/message.h"
 #include "discrepancy/physics_terms.h"
 
 namespace auv::discrepancy {
@@ -102,7 +103,7 @@ class CheckModel {
   virtual bool hasCg() const { return false; }
   virtual double cgX(const Params&) const { return std::numeric_limits<double>::quiet_NaN(); }
   virtual double cgY(const Params&) const { return std::numeric_limits<double>::quiet_NaN(); }
-  virtual std::string description() const = 0;
+  virtual Message description() const = 0;
   virtual std::vector<std::string> notes() const { return {}; }
 };
 

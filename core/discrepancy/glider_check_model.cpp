@@ -9,6 +9,7 @@
 #include "analysis/series_tools.h"
 #include "common/input_error.h"
 #include "common/units.h"
+#include "discrepancy/check_messages.h"
 #include "discrepancy/log_features.h"
 #include "seawater/seawater.h"
 
@@ -432,10 +433,8 @@ void GliderCheckModel::simulationError(const Params& p, std::vector<double>& out
   }
 }
 
-std::string GliderCheckModel::description() const {
-  return "steady glide (Merckelbach et al. 2010) on " + obs_channel_ +
-         "-derived vertical velocity; ballast state: net buoyancy at the mean operating state and Cd0" +
-         std::string(fit_lift_ ? ", with the lift slope" : "");
+Message GliderCheckModel::description() const {
+  return Message(fit_lift_ ? msg::kModelGliderLift : msg::kModelGlider, {obs_channel_});
 }
 
 }  // namespace auv::discrepancy

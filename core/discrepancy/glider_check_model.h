@@ -65,7 +65,7 @@ class GliderCheckModel final : public CheckModel {
   std::vector<Channel> simulationChannels() const override;
   void simulationError(const Params& p, std::vector<double>& out) const override;
   double netBuoyancyKg(const Params& p) const override { return p.nuisance[0]; }
-  std::string description() const override;
+  Message description() const override;
   std::vector<std::string> notes() const override { return notes_; }
 
   const analysis::GliderFlightConstants& constants() const { return c_; }

@@ -1,5 +1,7 @@
 #include "discrepancy/localisation.h"
 
+#include "discrepancy/check_messages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -67,6 +69,7 @@ struct NumericFactor {
   const char* unit;       // for band labels
   const char* above;      // words for x > x0 ("below", for pressure = deeper)
   const char* below;
+  const char* words;  // the factor's name in a sentence
 };
 
 double quantile(std::vector<double> v, double q) {
@@ -141,20 +144,21 @@ Localisation localise(const SampleTable& s, std::span<const double> value, Chann
 
   // A residual that hardly varies is a constant offset: say so.
   if (sd < 0.05 * std::abs(L.mean)) {
-    L.summary = what + " is a constant " + num(L.mean) + " " + unit + " everywhere (all phases, depths and speeds)";
+    L.summary = Message(msg::kConstant, {what, num(L.mean), unit});
     return L;
   }
 
   std::vector<double> hours(s.t.size());
   for (std::size_t i = 0; i < s.t.size(); ++i) hours[i] = s.t[i] / 3600.0;
   const NumericFactor numeric[] = {
-      {"pressure", &s.pressure_dbar, 100.0, "100 dbar", "dbar", "below", "above"},
-      {"temperature", &s.temperature_degC, 1.0, "degC", "degC", "above", "below"},
-      {"time", &hours, 1.0, "hour", "h", "after", "before"},
-      {"speed", &s.speed_mps, 0.1, "0.1 m/s", "m/s", "above", "below"},
-      {"rpm", &s.rpm, 100.0, "100 rpm", "rpm", "above", "below"},
-      {"pitch", &s.pitch_deg, 10.0, "10 deg of pitch", "deg", "above", "below"},
-      {"since_actuator_change", &s.since_actuator_s, 10.0, "10 s since an actuator change", "s", "after", "within"},
+      {"pressure", &s.pressure_dbar, 100.0, "100 dbar", "dbar", "below", "above", "pressure"},
+      {"temperature", &s.temperature_degC, 1.0, "degC", "degC", "above", "below", "temperature"},
+      {"time", &hours, 1.0, "hour", "h", "after", "before", "time"},
+      {"speed", &s.speed_mps, 0.1, "0.1 m/s", "m/s", "above", "below", "speed"},
+      {"rpm", &s.rpm, 100.0, "100 rpm", "rpm", "above", "below", "propeller speed"},
+      {"pitch", &s.pitch_deg, 10.0, "10 deg of pitch", "deg", "above", "below", "pitch"},
+      {"since_actuator_change", &s.since_actuator_s, 10.0, "10 s since an actuator change", "s", "after", "within",
+       "time since an actuator change"},
   };
 
   for (const NumericFactor& f : numeric) {
@@ -255,16 +259,19 @@ Localisation localise(const SampleTable& s, std::span<const double> value, Chann
       ff.step = f.step_text;
       // "grows" when the error moves away from zero as the factor increases.
       const bool grows = (bestB > 0) == (ym + bestB * (x1 - x0) / 2 > 0) || std::abs(ym) < 1e-12;
-      ff.text = what + (grows ? " grows " : " shrinks ") + num(std::abs(ff.slope)) + " " + unit + " per " + f.step_text;
-      if (!std::isnan(bestX)) ff.text += std::string(" ") + (aboveHinge ? f.above : f.below) + " " + num(bestX) + " " + f.unit;
-      ff.text += " (" + std::string(bestB > 0 ? "+" : "-") + num(std::abs(ff.slope)) + " " + unit + ", " +
-                 fmt("%.0f", 100 * std::max(r2, r2best)) + " % of its variance)";
+      const std::string size = num(std::abs(ff.slope)), signed_size = (bestB > 0 ? "+" : "-") + size;
+      const std::string variance = fmt("%.0f", 100 * std::max(r2, r2best));
+      if (std::isnan(bestX))
+        ff.text = Message(grows ? msg::kGrows : msg::kShrinks, {what, size, unit, f.step_text, signed_size, variance});
+      else
+        ff.text = Message(grows ? msg::kGrowsBeyond : msg::kShrinksBeyond,
+                          {what, size, unit, f.step_text, aboveHinge ? f.above : f.below, num(bestX), f.unit,
+                           signed_size, variance});
     } else {
       std::size_t gmax = 0;
       for (std::size_t g = 0; g < ff.bins.size(); ++g)
         if (std::abs(ff.bins[g].mean - ym) > std::abs(ff.bins[gmax].mean - ym) && ff.bins[g].count >= 5) gmax = g;
-      ff.text = what + " concentrates at " + std::string(f.name) + " " + ff.bins[gmax].label + " (mean " +
-                num(ff.bins[gmax].mean) + " " + unit + " against " + num(ym) + " overall)";
+      ff.text = Message(msg::kConcentrates, {what, f.words, ff.bins[gmax].label, num(ff.bins[gmax].mean), unit, num(ym)});
     }
     L.ranked.push_back(ff);
   }
@@ -283,12 +290,17 @@ Localisation localise(const SampleTable& s, std::span<const double> value, Chann
     for (std::size_t g = 0; g < ff.bins.size(); ++g)
       if (ff.bins[g].count >= 5 && (ff.bins[gmax].count < 5 || std::abs(ff.bins[g].mean) > std::abs(ff.bins[gmax].mean)))
         gmax = g;
+    std::vector<std::string> args{what, ff.bins[gmax].label + "s", num(ff.bins[gmax].mean), unit};
     std::string others;
     for (std::size_t g = 0; g < ff.bins.size(); ++g)
-      if (g != gmax && ff.bins[g].count >= 5)
+      if (g != gmax && ff.bins[g].count >= 5) {
         others += (others.empty() ? "" : ", ") + ff.bins[g].label + "s " + num(ff.bins[g].mean);
-    ff.text = what + " is largest during " + ff.bins[gmax].label + "s: mean " + num(ff.bins[gmax].mean) + " " + unit +
-              (others.empty() ? "" : " (" + others + ")");
+        args.push_back(ff.bins[g].label + "s");
+        args.push_back(num(ff.bins[g].mean));
+      }
+    std::string english = what + " is largest during " + args[1] + ": mean " + args[2] + " " + unit +
+                          (others.empty() ? "" : " (" + others + ")");
+    ff.text = Message(msg::kLargestDuring, std::move(english), std::move(args));
     ff.bins.erase(std::remove_if(ff.bins.begin(), ff.bins.end(), [](const BinSummary& b) { return b.count == 0; }),
                   ff.bins.end());
     if (ff.bins.size() >= 2) L.ranked.push_back(ff);
@@ -301,19 +313,22 @@ Localisation localise(const SampleTable& s, std::span<const double> value, Chann
     return p.factor == "phase" && q.factor != "phase";
   });
   if (L.ranked.empty()) {
-    L.summary = what + ": no factor of the log explains it";
+    L.summary = Message(msg::kNoFactor, {what});
     return L;
   }
-  L.summary = L.ranked.front().text;
   // Name what it does not depend on: the technician's first suspects.
-  bool named = false;
+  std::string independent;
   for (const char* cand : {"speed", "rpm", "time"}) {
     for (const FactorFinding& f : L.ranked)
-      if (!named && f.factor == cand && f.share < 0.03 && f.factor != L.ranked.front().factor) {
-        L.summary += std::string("; independent of ") + (f.factor == "rpm" ? "propeller speed" : f.factor);
-        named = true;
-      }
+      if (independent.empty() && f.factor == cand && f.share < 0.03 && f.factor != L.ranked.front().factor)
+        independent = f.factor == "rpm" ? "propeller speed" : f.factor;
   }
+  const Message& top = L.ranked.front().text;
+  std::vector<std::string> args{top.id()};
+  args.insert(args.end(), top.args().begin(), top.args().end());
+  args.push_back(independent);
+  std::string english = top.text() + (independent.empty() ? "" : "; independent of " + independent);
+  L.summary = Message(msg::kSummary, std::move(english), std::move(args));
   return L;
 }
 

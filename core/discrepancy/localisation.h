@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/message.h"
 #include "discrepancy/check_model.h"
 
 namespace auv::discrepancy {
@@ -26,7 +27,7 @@ struct FactorFinding {
   bool linear = false;  // described as a trend
   double slope = 0.0;   // display unit per factor step
   std::string step;     // "100 dbar"
-  std::string text;
+  Message text;  // English, with its id and arguments (check_messages.h)
   std::vector<BinSummary> bins;
 };
 
@@ -37,7 +38,7 @@ struct Localisation {
   double mean = 0.0;
   std::size_t count = 0;
   std::vector<FactorFinding> ranked;  // largest share first
-  std::string summary;               // top finding in words
+  Message summary;                   // top finding in words (id check.summary)
 };
 
 // `value` per sample row (SI, NaN = not available).

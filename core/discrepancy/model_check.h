@@ -62,7 +62,7 @@ struct MissingPhysics {
   double profile_value = 0.0;       // what the profile assumed, display unit
   Channel channel = Channel::kDepth;   // simulation channel it improves most
   double rms_before = 0.0, rms_after = 0.0;  // held-out simulation RMS on `channel`, display unit
-  std::string where;
+  Message where;
   double inclusion_probability = 0.0;
   double delta_bic = 0.0;
   double t_value = 0.0;
@@ -96,7 +96,7 @@ struct IdentifiabilityIssue {
 };
 
 struct ModelCheckResult {
-  std::string model;
+  Message model;
   std::size_t samples = 0;
   int units = 0;
   double neff_ratio = 1.0;

@@ -1,8 +1,8 @@
 // Issue 14 item 7: the computed advice (core's notes, warnings and
 // explanations, as message ids with arguments) is shown in the wizard's own
 // words and, under Norwegian, in Norwegian: complete for every id, and on
-// the analysis and adjustment pages of the post-mission demo no English
-// advice sentence remains.
+// the analysis, model-check and adjustment pages of the post-mission demo
+// no English advice sentence remains.
 #include <gtest/gtest.h>
 
 #include <QCoreApplication>
@@ -18,6 +18,7 @@
 #include "ui_fixture.h"
 #include "wizard/advice_text.h"
 #include "wizard/demo_state.h"
+#include "wizard/model_words.h"
 #include "wizard/translations.h"
 
 namespace auv::ui {
@@ -140,6 +141,7 @@ TEST_F(AdviceNorwegian, AnalysisAndAdjustmentPagesHaveNoEnglishAdvice) {
     return translated;
   };
   int pages = 0;
+  bool saw_check = false;
   while (wiz.currentId() != OperatorWizard::kSummary && pages++ < 12) {
     auv::testing::settlePage(wiz);
     if (wiz.currentId() == OperatorWizard::kDeviationPlots) {
@@ -157,6 +159,35 @@ TEST_F(AdviceNorwegian, AnalysisAndAdjustmentPagesHaveNoEnglishAdvice) {
       EXPECT_NE(notes.indexOf("Stampavvik"), -1) << notes.toStdString();
       EXPECT_NE(find<QLabel>(wiz, "net_buoyancy")->text().indexOf("Netto oppdrift"), -1);
     }
+    if (wiz.currentId() == OperatorWizard::kModelCheck) {
+      // The model check's explanations: what the model is and where each
+      // residual concentrates, in Norwegian words (check_messages.h).
+      ASSERT_TRUE(wiz.state().model_check.has_value());
+      saw_check = true;
+      const auto& r = *wiz.state().model_check;
+      std::vector<Message> msgs{r.model};
+      for (const auto& l : r.localisation) msgs.push_back(l.summary);
+      for (const auto& m : r.missing_physics) msgs.push_back(m.where);
+      const QString shown = find<QLabel>(*wiz.currentPage(), "where")->text() + "\n" +
+                            find<QLabel>(*wiz.currentPage(), "check_status")->text();
+      int checked = 0;
+      for (const Message& m : msgs) {
+        if (m.empty()) continue;
+        EXPECT_FALSE(m.id().empty()) << "model check: explanation without an id: " << m;
+        removeTranslation();
+        const QString en = readableModelMessage(m);
+        installTranslation(QLocale(QLocale::NorwegianBokmal));
+        const QString nbText = readableModelMessage(m);
+        EXPECT_NE(en, nbText) << m;
+        EXPECT_EQ(shown.indexOf(QString::fromStdString(m).toHtmlEscaped()), -1) << "core's English left: " << m;
+        EXPECT_EQ(shown.indexOf(en.toHtmlEscaped()), -1) << "English left: " << en.toStdString();
+        EXPECT_NE(shown.indexOf(nbText.toHtmlEscaped()), -1) << "not shown: " << nbText.toStdString();
+        ++checked;
+      }
+      EXPECT_GE(checked, 3) << shown.toStdString();
+      EXPECT_EQ(shown.indexOf(" concentrates at "), -1) << shown.toStdString();
+      EXPECT_EQ(shown.indexOf("simulation error"), -1) << shown.toStdString();
+    }
     if (wiz.currentId() == OperatorWizard::kAdjustment) {
       ASSERT_TRUE(wiz.state().plan.has_value());
       const auto& p = *wiz.state().plan;
@@ -170,6 +201,7 @@ TEST_F(AdviceNorwegian, AnalysisAndAdjustmentPagesHaveNoEnglishAdvice) {
     wiz.next();
   }
   EXPECT_EQ(wiz.currentId(), OperatorWizard::kSummary) << wiz.state().last_error;
+  EXPECT_TRUE(saw_check);
 }
 
 }  // namespace auv::ui

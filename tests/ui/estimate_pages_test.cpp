@@ -95,7 +95,7 @@ std::pair<double, double> shownValueSigma(const QString& text, const QString& pr
 
 class EstimatePages : public auv::testing::UiTest {
  protected:
-  static void waitFor(const std::function<bool()>& busy, int timeout_ms = 120000) {
+  static void waitFor(const std::function<bool()>& busy, int timeout_ms = 300000) {
     QElapsedTimer t;
     t.start();
     while (busy() && t.elapsed() < timeout_ms) QApplication::processEvents(QEventLoop::AllEvents, 20);

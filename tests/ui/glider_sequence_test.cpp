@@ -112,7 +112,7 @@ class GliderSequence : public auv::testing::UiTest {
   static void waitFor(const std::function<bool()>& busy) {
     QElapsedTimer t;
     t.start();
-    while (busy() && t.elapsed() < 60000) QApplication::processEvents(QEventLoop::AllEvents, 20);
+    while (busy() && t.elapsed() < 300000) QApplication::processEvents(QEventLoop::AllEvents, 20);
     QApplication::processEvents();
   }
   static void clickNext(OperatorWizard& w) {

@@ -251,7 +251,7 @@ void ModelCheckPage::showResult() {
   }
   status_->setStyleSheet(QString());
   const auto& r = *outcome_.result;
-  status_->setText(tr("Model: %1.").arg(readableModelText(outcome_.description)));
+  status_->setText(tr("Model: %1.").arg(readableModelMessage(outcome_.description)));
   showSummary();
   calibration_->showRows(CalibrationTable::rowsOf(r.calibration));
   const auto& ov = outcome_.overlay;
@@ -389,7 +389,7 @@ void ModelCheckPage::showTerms() {
     const bool on = std::find(state_.accepted_terms.begin(), state_.accepted_terms.end(), m.id) != state_.accepted_terms.end();
     name->setCheckState(on ? Qt::Checked : Qt::Unchecked);
     name->setData(Qt::UserRole, q(m.id));
-    QString tip = q(m.where);
+    QString tip = readableModelMessage(m.where);
     if (!m.confused_with.empty()) {
       QStringList c;
       for (const auto& x : m.confused_with) c << q(x);
@@ -414,7 +414,7 @@ void ModelCheckPage::showWhere() {
   const auto& r = *outcome_.result;
   QStringList lines;
   for (const auto& m : r.missing_physics)
-    if (!m.where.empty()) lines << tr("<b>%1</b> acts where: %2").arg(termLabel(m.id), readableModelText(m.where).toHtmlEscaped());
+    if (!m.where.empty()) lines << tr("<b>%1</b> acts where: %2").arg(termLabel(m.id), readableModelMessage(m.where).toHtmlEscaped());
   lines << tr("<b>Where the ballast-only model misses</b>:");
   // The shown channel's simulation error first, then the rest.
   const int shown = shownChannel();
@@ -427,7 +427,7 @@ void ModelCheckPage::showWhere() {
     });
   }
   for (const auto* l : loc)
-    lines << tr("%1, %2: %3").arg(q(l->source), channelLabel(l->channel), readableModelText(l->summary).toHtmlEscaped());
+    lines << tr("%1, %2: %3").arg(residualSourceLabel(l->source), channelLabel(l->channel), readableModelMessage(l->summary).toHtmlEscaped());
   for (const auto& i : r.identifiability) lines << tr("Cannot be told apart: %1").arg(readableModelText(i.message).toHtmlEscaped());
   for (const auto& w : r.warnings) lines << QStringLiteral("⚠ %1").arg(readableModelText(w).toHtmlEscaped());
   for (const auto& n : r.notes) lines << QStringLiteral("<span style='color:#555'>%1</span>").arg(readableModelText(n).toHtmlEscaped());

@@ -75,6 +75,17 @@ constexpr Advice kAdvice[] = {
   {"plan.classic_standard_kit", QT_TRANSLATE_NOOP("Advice", "The classic table uses the standard kit only.")},
   {"plan.manoeuvre", QT_TRANSLATE_NOOP("Advice", "The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short legs at different speeds); it would bring the uncertainty to about %4 kg.")},
   {"plan.roll_at_cruise", QT_TRANSLATE_NOOP("Advice", "Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).")},
+  // Model check (core/discrepancy/check_messages.h).
+  {"check.constant", QT_TRANSLATE_NOOP("Advice", "%1 is a constant %2 %3 everywhere (all phases, depths and speeds)")},
+  {"check.grows", QT_TRANSLATE_NOOP("Advice", "%1 grows %2 %3 per %4 (%5 %3, %6 % of its variance)")},
+  {"check.shrinks", QT_TRANSLATE_NOOP("Advice", "%1 shrinks %2 %3 per %4 (%5 %3, %6 % of its variance)")},
+  {"check.grows_beyond", QT_TRANSLATE_NOOP("Advice", "%1 grows %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)")},
+  {"check.shrinks_beyond", QT_TRANSLATE_NOOP("Advice", "%1 shrinks %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)")},
+  {"check.concentrates", QT_TRANSLATE_NOOP("Advice", "%1 concentrates at %2 %3 (mean %4 %5 against %6 overall)")},
+  {"check.no_factor", QT_TRANSLATE_NOOP("Advice", "%1: no factor of the log explains it")},
+  {"check.model_auv", QT_TRANSLATE_NOOP("Advice", "AUV rigid-body model of the simulator (Fossen form) on smoothed logged states; simulation: replay of the logged commands through the model's autopilot; ballast state: net buoyancy and CG x/y")},
+  {"check.model_glider", QT_TRANSLATE_NOOP("Advice", "steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state and Cd0")},
+  {"check.model_glider_lift", QT_TRANSLATE_NOOP("Advice", "steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state, Cd0 and the lift slope")},
 };
 
 // Words core passes as arguments; translated one by one.
@@ -82,6 +93,30 @@ constexpr Advice kAdvice[] = {
   QT_TRANSLATE_NOOP("AdviceWord", "operating"), QT_TRANSLATE_NOOP("AdviceWord", "deepest"),
   QT_TRANSLATE_NOOP("AdviceWord", "surface"), QT_TRANSLATE_NOOP("AdviceWord", "transit"),
   QT_TRANSLATE_NOOP("AdviceWord", "none"),
+  // Steady windows (core/analysis/segments.cpp).
+  QT_TRANSLATE_NOOP("AdviceWord", "depth command steps"), QT_TRANSLATE_NOOP("AdviceWord", "pitch command steps"),
+  QT_TRANSLATE_NOOP("AdviceWord", "speed changes"), QT_TRANSLATE_NOOP("AdviceWord", "propeller speed changes"),
+  // Model check (core/discrepancy/localisation.cpp): residuals, factors,
+  // trend steps, relations, mission phases, observed channels.
+  QT_TRANSLATE_NOOP("AdviceWord", "vertical-velocity error"), QT_TRANSLATE_NOOP("AdviceWord", "vertical-force error"),
+  QT_TRANSLATE_NOOP("AdviceWord", "pitch-moment error"), QT_TRANSLATE_NOOP("AdviceWord", "roll-moment error"),
+  QT_TRANSLATE_NOOP("AdviceWord", "depth error"), QT_TRANSLATE_NOOP("AdviceWord", "pitch error"),
+  QT_TRANSLATE_NOOP("AdviceWord", "roll error"), QT_TRANSLATE_NOOP("AdviceWord", "speed error"),
+  QT_TRANSLATE_NOOP("AdviceWord", "surge-force error"), QT_TRANSLATE_NOOP("AdviceWord", "error"),
+  QT_TRANSLATE_NOOP("AdviceWord", "pressure"), QT_TRANSLATE_NOOP("AdviceWord", "temperature"),
+  QT_TRANSLATE_NOOP("AdviceWord", "time"), QT_TRANSLATE_NOOP("AdviceWord", "speed"),
+  QT_TRANSLATE_NOOP("AdviceWord", "propeller speed"), QT_TRANSLATE_NOOP("AdviceWord", "pitch"),
+  QT_TRANSLATE_NOOP("AdviceWord", "time since an actuator change"), QT_TRANSLATE_NOOP("AdviceWord", "depth"),
+  QT_TRANSLATE_NOOP("AdviceWord", "100 dbar"), QT_TRANSLATE_NOOP("AdviceWord", "degC"),
+  QT_TRANSLATE_NOOP("AdviceWord", "hour"), QT_TRANSLATE_NOOP("AdviceWord", "0.1 m/s"),
+  QT_TRANSLATE_NOOP("AdviceWord", "100 rpm"), QT_TRANSLATE_NOOP("AdviceWord", "10 deg of pitch"),
+  QT_TRANSLATE_NOOP("AdviceWord", "10 s since an actuator change"),
+  QT_TRANSLATE_NOOP("AdviceWord", "below"), QT_TRANSLATE_NOOP("AdviceWord", "above"),
+  QT_TRANSLATE_NOOP("AdviceWord", "after"), QT_TRANSLATE_NOOP("AdviceWord", "before"),
+  QT_TRANSLATE_NOOP("AdviceWord", "within"),
+  QT_TRANSLATE_NOOP("AdviceWord", "surfaces"), QT_TRANSLATE_NOOP("AdviceWord", "dives"),
+  QT_TRANSLATE_NOOP("AdviceWord", "climbs"), QT_TRANSLATE_NOOP("AdviceWord", "levels"),
+  QT_TRANSLATE_NOOP("AdviceWord", "turns"),
 };
 // clang-format on
 
@@ -182,9 +217,41 @@ QString bandUnreachable(const std::vector<std::string>& a) {
   return s + ".";
 }
 
+// check.largest_during: what, phase, mean, unit, then (phase, mean) pairs of
+// the other phases (core/discrepancy/check_messages.h).
+QString largestDuring(const std::vector<std::string>& a) {
+  if (a.size() < 4) return {};
+  auto q = [](const std::string& s) { return QString::fromStdString(s); };
+  QString s = QCoreApplication::translate("Advice", "%1 is largest during %2: mean %3 %4")
+                  .arg(word(a[0]), word(a[1]), q(a[2]), q(a[3]));
+  QStringList others;
+  for (std::size_t i = 4; i + 1 < a.size(); i += 2) others << word(a[i]) + " " + q(a[i + 1]);
+  if (!others.isEmpty()) s += " (" + others.join(", ") + ")";
+  return s;
+}
+
+// check.summary: the top finding's id and arguments, then the factor the
+// error does not depend on ("" when none).
+QString checkSummary(const std::vector<std::string>& a) {
+  if (a.size() < 2) return {};
+  const Message finding(a.front(), std::string(), std::vector<std::string>(a.begin() + 1, a.end() - 1));
+  QString s = adviceText(finding);
+  if (s.isEmpty()) return {};
+  if (!a.back().empty()) s += QCoreApplication::translate("Advice", "; independent of %1").arg(word(a.back()));
+  return s;
+}
+
 }  // namespace
 
 QString adviceText(const Message& m) {
+  if (m.id() == "check.largest_during") {
+    const QString s = largestDuring(m.args());
+    if (!s.isEmpty()) return s;
+  }
+  if (m.id() == "check.summary") {
+    const QString s = checkSummary(m.args());
+    if (!s.isEmpty()) return s;
+  }
   if (m.id() == "plan.explain_point") {
     const QString s = explainPoint(m.args());
     if (!s.isEmpty()) return s;

@@ -23,7 +23,7 @@ struct ModelCheckOutcome {
   std::optional<discrepancy::ModelCheckResult> result;
   discrepancy::SimulationOverlay overlay;
   std::shared_ptr<const discrepancy::CheckModel> model;  // the model the result belongs to
-  std::string description;  // the check model's own description
+  Message description;  // the check model's own description
   std::string error;        // InputError text when !ok
   std::shared_ptr<const MissionLog> log;  // the log it was run on
 };

@@ -3,6 +3,8 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 
+#include "wizard/advice_text.h"
+
 namespace auv::ui {
 namespace {
 
@@ -64,6 +66,17 @@ QString readableModelText(const std::string& core_text) {
   static const QRegularExpression range(R"((\d)--(\d))");
   s.replace(range, "\\1 " + words(QT_TRANSLATE_NOOP("ModelWords", "to")) + " -\\2");
   return s;
+}
+
+QString readableModelMessage(const Message& m) {
+  return readableModelText(m.id().empty() ? m.text() : adviceText(m).toStdString());
+}
+
+QString residualSourceLabel(const std::string& source) {
+  if (source == "equation error") return words(QT_TRANSLATE_NOOP("ModelWords", "equation error"));
+  if (source == "simulation error") return words(QT_TRANSLATE_NOOP("ModelWords", "simulation error"));
+  if (source == "term contribution") return words(QT_TRANSLATE_NOOP("ModelWords", "term contribution"));
+  return QString::fromStdString(source);
 }
 
 }  // namespace auv::ui

@@ -5,6 +5,7 @@
 #include <QString>
 #include <string>
 
+#include "common/message.h"
 #include "discrepancy/physics_terms.h"
 
 namespace auv::ui {
@@ -15,5 +16,10 @@ QString channelLabel(discrepancy::Channel c);
 // in words: term and channel ids, "ballast_state", "core/sim", and number
 // ranges written "a--b".
 QString readableModelText(const std::string& core_text);
+// A model-check message: by its id in the wizard's words and language
+// (advice_text.*), else its English made readable as above.
+QString readableModelMessage(const Message& m);
+// "equation error", "simulation error", "term contribution" in words.
+QString residualSourceLabel(const std::string& source);
 
 }  // namespace auv::ui
