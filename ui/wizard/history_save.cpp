@@ -96,10 +96,12 @@ nlohmann::json missionSummaryJson(const WizardState& s) {
   return j;
 }
 
-RecordId saveMissionToHistory(HistoryStore& store, const WizardState& s, TimePoint now) {
+namespace {
+
+// The mission, its analysis and accepted terms, for a configuration that is
+// in the history (a new one was added by the caller in the same transaction).
+RecordId saveMissionRecords(HistoryStore& store, const WizardState& s, TimePoint now) {
   if (!s.log) throw InputError("mission log", "no log imported", "import a log on the import page");
-  Transaction tx(store.database());
-  ensureConfiguration(store, s, now);
   const RecordId id = store.importMissionFile(s.configuration_id, s.log_file, missionSummaryJson(s), now);
   // The analysis with its mission: the next session plans from it (pre
   // mission), with the ballast state this session's plan used.
@@ -120,6 +122,16 @@ RecordId saveMissionToHistory(HistoryStore& store, const WizardState& s, TimePoi
     m.model = {{"log", s.log_file}, {"accepted", accepted}, {"profile", s.model_profile}};
     store.addModelTerms(s.configuration_id, m);
   }
+  return id;
+}
+
+}  // namespace
+
+RecordId saveMissionToHistory(HistoryStore& store, const WizardState& s, TimePoint now) {
+  if (!s.log) throw InputError("mission log", "no log imported", "import a log on the import page");
+  Transaction tx(store.database());
+  ensureConfiguration(store, s, now);
+  const RecordId id = saveMissionRecords(store, s, now);
   tx.commit();
   return id;
 }
@@ -136,7 +148,7 @@ PreMissionSaveIds savePreMissionToHistory(HistoryStore& store, const WizardState
   ensureConfiguration(store, s, now);
   std::optional<RecordId> analysis_id = basis.analysis_id;
   if (s.mode == SessionMode::kPostMission && s.log) {
-    ids.mission = saveMissionToHistory(store, s, now);
+    ids.mission = saveMissionRecords(store, s, now);
     // The post-mission save may have stored this session's analysis with
     // the mission: the plan then links to that record.
     if (const auto a = store.latestAnalysis(s.configuration_id, now); a && a->mission_id == ids.mission) analysis_id = a->id;
