@@ -65,7 +65,9 @@ void slocumPlan(const VehicleProfile& v, const GliderPlanInput& in, double add_k
     // Unknown contents: half-full bottles and rails, so that both adding and
     // removing are possible; the capacity check is then only indicative.
     for (int k = 0; k < kSlocumItemCount; ++k) now.at(static_cast<SlocumItem>(k)) = 0.5 * L.item(static_cast<SlocumItem>(k)).capacity_kg;
-    out["warnings"].push_back("bottle contents not given (--installed): capacities checked against half-full bottles");
+    out["warnings"].push_back(
+        "bottle contents not given: capacities checked against half-full bottles (give what is in the bottles to "
+        "check them)");
   }
   const double xb = L.item(kForePort).position_m.x(), xa = L.item(kAftUpper).position_m.x();
   // Pitch moment the trim asks for: the battery sits at battery_for_level
