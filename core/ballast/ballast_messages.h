@@ -22,6 +22,22 @@ inline constexpr MessageFormat kCapsize{"ballast.capsize",
                                         "CG is not below CB after the move: the vehicle would capsize; check bg and payload"};
 inline constexpr MessageFormat kThesisHeavy{"ballast.thesis_heavy", "the thesis mapping leaves the vehicle %1 heavy"};
 
-inline constexpr const MessageFormat* kAll[] = {&kStaysHeavy, &kNodeLimit, &kCapsize, &kThesisHeavy};
+// What to do at one point. kPoint is built in pieces: the point's name, the
+// signed change, mass before, after, capacity, how many of the pieces are
+// removals, then the pieces ("2 × 4.8 kg"), removals first.
+inline constexpr MessageFormat kPointNoChange{"ballast.point_no_change", "%1: no change (%2 stays)."};
+inline constexpr const char* kPointId = "ballast.point";
+inline constexpr MessageFormat kPriorities{
+    "ballast.priorities",
+    "Priorities (thesis \u00a75.4): net buoyancy %1 to %2 and never negative, then pitch within \u00b1%3, then roll "
+    "within \u00b1%4; %5 piece(s) to handle."};
+inline constexpr MessageFormat kAfterMove{"ballast.after_move", "After the move: net buoyancy %1, pitch %2, roll %3."};
+inline constexpr MessageFormat kHalfWay{
+    "ballast.half_way",
+    "HalfWay policy: this move aims at about half of the needed change (net buoyancy %1 to %2, pitch %3, roll %4); "
+    "check the vehicle again and repeat."};
+
+inline constexpr const MessageFormat* kAll[] = {&kStaysHeavy, &kNodeLimit,  &kCapsize,  &kThesisHeavy,
+                                                &kPointNoChange, &kPriorities, &kAfterMove, &kHalfWay};
 
 }  // namespace auv::ballast::msg

@@ -15,7 +15,7 @@ struct BallastSolution {
   Eigen::Vector3d cg_m = Eigen::Vector3d::Zero();
   double pitch_deg = 0, roll_deg = 0;   // predicted static attitude (exact, hydrostatics/static_trim.h)
   bool buoyancy_in_band = false, pitch_in_band = false, roll_in_band = false;
-  std::vector<std::string> notes;       // one sentence per point or decision
+  std::vector<Message> notes;           // one sentence per point or decision (ballast_messages.h)
   std::vector<Message> warnings;        // unreachable bands, unsafe states (ballast_messages.h)
 };
 

@@ -56,20 +56,16 @@ void explain(const BallastProblem& pr, const TrimModel& model, const TrimTargets
     sol.notes.push_back(pointNote(pr.points[p], pr.piece_sizes_kg, sol.delta[p].data(), before, before + sol.add_kg[p]));
     for (int d : sol.delta[p]) handled += std::abs(d);
   }
-  sol.notes.push_back("Priorities (thesis \u00a75.4): net buoyancy " + kgText(lo) + " to " +
-                      kgText(spec.net_buoyancy_max_kg) + " and never negative, then pitch within \u00b1" +
-                      degText(spec.pitch_tolerance_deg) + ", then roll within \u00b1" +
-                      degText(spec.roll_tolerance_deg) + "; " + std::to_string(handled) +
-                      " piece(s) to handle.");
-  sol.notes.push_back("After the move: net buoyancy " + signedKgText(sol.net_buoyancy_kg) + ", pitch " +
-                      signedDegText(sol.pitch_deg) + ", roll " + signedDegText(sol.roll_deg) + ".");
+  sol.notes.push_back(Message(msg::kPriorities, {kgText(lo), kgText(spec.net_buoyancy_max_kg),
+                                                 degText(spec.pitch_tolerance_deg), degText(spec.roll_tolerance_deg),
+                                                 std::to_string(handled)}));
+  sol.notes.push_back(
+      Message(msg::kAfterMove, {signedKgText(sol.net_buoyancy_kg), signedDegText(sol.pitch_deg), signedDegText(sol.roll_deg)}));
 
   if (pr.policy == BallastPolicy::HalfWay) {
-    sol.notes.push_back("HalfWay policy: this move aims at about half of the needed change (net buoyancy " +
-                        kgText(targets.net_lo_kg) + " to " + kgText(targets.net_hi_kg) + ", pitch " +
-                        signedDegText(units::radToDeg(targets.pitch_centre)) + ", roll " +
-                        signedDegText(units::radToDeg(targets.roll_centre)) +
-                        "); check the vehicle again and repeat.");
+    sol.notes.push_back(Message(msg::kHalfWay, {kgText(targets.net_lo_kg), kgText(targets.net_hi_kg),
+                                                signedDegText(units::radToDeg(targets.pitch_centre)),
+                                                signedDegText(units::radToDeg(targets.roll_centre))}));
   } else {
     if (opt.window.best.negative_kg > 1e-6) {
       // said below, for both policies

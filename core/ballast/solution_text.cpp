@@ -1,5 +1,7 @@
 #include "ballast/solution_text.h"
 
+#include "ballast/ballast_messages.h"
+
 #include <cstdio>
 #include <cstdlib>
 
@@ -29,8 +31,8 @@ std::string degText(double deg) { return format("%.2f\u00b0", deg); }
 std::string signedDegText(double deg) { return format("%+.2f\u00b0", deg); }
 std::string sizeText(double kg) { return format("%g kg", kg); }
 
-std::string pointNote(const AdjustmentPoint& point, const std::vector<double>& sizes_kg, const int* delta,
-                      double before_kg, double after_kg) {
+Message pointNote(const AdjustmentPoint& point, const std::vector<double>& sizes_kg, const int* delta,
+                  double before_kg, double after_kg) {
   std::vector<std::string> adds, removes;
   for (std::size_t s = sizes_kg.size(); s-- > 0;) {  // largest first, as they are handled
     if (delta[s] == 0) continue;
@@ -38,12 +40,21 @@ std::string pointNote(const AdjustmentPoint& point, const std::vector<double>& s
     (delta[s] > 0 ? adds : removes).push_back(item);
   }
   const std::string who = point.label.empty() ? point.name : point.label;
-  if (adds.empty() && removes.empty()) return who + ": no change (" + kgText(before_kg) + " stays).";
+  if (adds.empty() && removes.empty()) return Message(msg::kPointNoChange, {who, kgText(before_kg)});
   std::string what;
   if (!removes.empty()) what = "remove " + join(removes);
   if (!adds.empty()) what += (what.empty() ? "add " : ", then add ") + join(adds);
-  return who + ": " + what + " (" + signedKgText(after_kg - before_kg) + "; " + kgText(before_kg) + " -> " +
-         kgText(after_kg) + " of " + kgText(point.capacity_kg) + ").";
+  std::string english = who + ": " + what + " (" + signedKgText(after_kg - before_kg) + "; " + kgText(before_kg) +
+                        " -> " + kgText(after_kg) + " of " + kgText(point.capacity_kg) + ").";
+  std::vector<std::string> args{who,
+                                signedKgText(after_kg - before_kg),
+                                kgText(before_kg),
+                                kgText(after_kg),
+                                kgText(point.capacity_kg),
+                                std::to_string(removes.size())};
+  args.insert(args.end(), removes.begin(), removes.end());
+  args.insert(args.end(), adds.begin(), adds.end());
+  return Message(msg::kPointId, std::move(english), std::move(args));
 }
 
 }  // namespace auv::ballast

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "common/message.h"
 #include "vehicle/vehicle_profile.h"
 
 namespace auv::ballast {
@@ -15,7 +16,8 @@ std::string signedDegText(double deg);     // "+0.50°"
 std::string sizeText(double kg);           // "1.2 kg" (piece sizes, shortest exact form)
 
 // "Fore / starboard: add 2 × 4.8 kg and 1 × 1.2 kg (+10.80 kg; 0.00 -> 10.80 kg of 40.00 kg)."
-std::string pointNote(const AdjustmentPoint& point, const std::vector<double>& sizes_kg, const int* delta,
-                      double before_kg, double after_kg);
+// (ids ballast.point / ballast.point_no_change, ballast_messages.h)
+Message pointNote(const AdjustmentPoint& point, const std::vector<double>& sizes_kg, const int* delta,
+                  double before_kg, double after_kg);
 
 }  // namespace auv::ballast

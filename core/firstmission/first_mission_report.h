@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "common/message.h"
+
 namespace auv {
 
 struct PieceCount {
@@ -46,8 +48,8 @@ struct FirstMissionReport {
   double roll_before_deg = 0.0;
   std::vector<PointRecommendation> points;
   PredictedTrim predicted;
-  std::vector<std::string> warnings;  // e.g. band not reachable with this kit
-  std::vector<std::string> notes;     // one-sentence explanations
+  std::vector<Message> warnings;  // e.g. band not reachable with this kit (ids: first_mission_messages.h, ...)
+  std::vector<Message> notes;     // one-sentence explanations
   nlohmann::json details = nlohmann::json::object();
 };
 

@@ -8,6 +8,7 @@
 #include "ballast/ballast_solver.h"
 #include "common/input_error.h"
 #include "common/units.h"
+#include "firstmission/first_mission_messages.h"
 #include "hydrostatics/balance.h"
 #include "vehicle/installed_check.h"
 
@@ -122,11 +123,11 @@ FirstMissionReport craneFirstMission(const VehicleProfile& vehicle, CraneFirstMi
   r.predicted.cg_offset_m = (sol.cg_m - vehicle.cb_m).head<2>();
   r.predicted.pitch_deg = sol.pitch_deg;
   r.predicted.roll_deg = sol.roll_deg;
-  r.warnings = crane.warnings;
+  r.warnings.assign(crane.warnings.begin(), crane.warnings.end());
   r.warnings.insert(r.warnings.end(), sol.warnings.begin(), sol.warnings.end());
   r.notes = sol.notes;
   if (!before.trim.stable) {
-    r.warnings.push_back("CG is not below CB with the profile's bg_mm: the vehicle would capsize; check bg_mm");
+    r.warnings.push_back(Message(firstmission::msg::kCapsizeProfileBg));
   }
   r.details = {{"rope_x_m", {in.weighing.rope_x_fore_m, in.weighing.rope_x_aft_m}},
                {"rope_y_m", in.weighing.rope_y_m},

@@ -196,7 +196,7 @@ FirstMissionReport compute(const VehicleProfile& v, const TankWeighing& w) {
   if (step.after.at(kAftUpper) != now.at(kAftUpper) || step.after.at(kAftLower) != now.at(kAftLower)) {
     r.notes.push_back(bottlePairNote("Aft bottles", kAftUpper, kAftLower, now, step.after, step.aft_scale_after_kg));
   }
-  r.warnings = step.warnings;
+  r.warnings.assign(step.warnings.begin(), step.warnings.end());
 
   if (!test) {
     r.notes.push_back("No roll test recorded: set the bottles, hang the glider for the roll test (report 4.2) and "

@@ -178,217 +178,251 @@
         <translation>BG fra fartøyprofilen (%1 mm ± %2 %) bestemmer skalaen på stampmomentene; BG fra en rulletest gjør tyngdepunkt x skarpere.</translation>
     </message>
     <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="59" />
+        <source>%1: no change (%2 stays).</source>
+        <translation>%1: ingen endring (%2 blir).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="60" />
+        <source>Priorities (thesis §5.4): net buoyancy %1 to %2 and never negative, then pitch within ±%3, then roll within ±%4; %5 piece(s) to handle.</source>
+        <translation>Prioriteringer (avhandlingen §5.4): netto oppdrift %1 til %2 og aldri negativ, deretter stamp innenfor ±%3, deretter rull innenfor ±%4; %5 lodd å håndtere.</translation>
+    </message>
+    <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="61" />
+        <source>After the move: net buoyancy %1, pitch %2, roll %3.</source>
+        <translation>Etter flyttingen: netto oppdrift %1, stamp %2, rull %3.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="62" />
+        <source>Half-way policy: this move aims at about half of the needed change (net buoyancy %1 to %2, pitch %3, roll %4); check the vehicle again and repeat.</source>
+        <translation>Halvveis-strategi: denne flyttingen sikter mot omtrent halvparten av nødvendig endring (netto oppdrift %1 til %2, stamp %3, rull %4); kontroller fartøyet igjen og gjenta.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="64" />
+        <source>The CG is not below the CB with the BG of the vehicle profile: the vehicle would capsize. Check BG in the vehicle profile.</source>
+        <translation>Tyngdepunktet ligger ikke under oppdriftssenteret med BG fra fartøyprofilen: fartøyet ville kantre. Kontroller BG i fartøyprofilen.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="67" />
         <source>No change: the vehicle is already as good as the kit allows.</source>
         <translation>Ingen endring: fartøyet er allerede så godt som vektsettet tillater.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="62" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="68" />
         <source>Next mission at %1: from net buoyancy %2, pitch %3, roll %4 to %5 ± %6, pitch %7 ± %8, roll %9 ± %10 (1 σ).</source>
         <translation>Neste oppdrag ved %1: fra netto oppdrift %2, stamp %3, rull %4 til %5 ± %6, stamp %7 ± %8, rull %9 ± %10 (1 σ).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="63" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="69" />
         <source>Mass %1 from the last mission: %2 displaced at %3, %4, %5 minus the measured net buoyancy %6.</source>
         <translation>Masse %1 fra forrige oppdrag: %2 fortrengt ved %3, %4, %5 minus målt netto oppdrift %6.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="64" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="70" />
         <source>Safety margin %1 = %2 × σ %3 (estimate and water): the change keeps at least that much net buoyancy at every planned point.</source>
         <translation>Sikkerhetsmargin %1 = %2 × σ %3 (estimat og vann): endringen beholder minst så mye netto oppdrift i hvert planlagte punkt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="65" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="71" />
         <source>CG x was not identified from the log: the plan assumes it at the CB and keeps the fore-aft balance. Check pitch on the next mission.</source>
         <translation>Tyngdepunkt x ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder balansen forut-akter. Kontroller stampen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="66" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="72" />
         <source>CG y was not identified from the log: the plan assumes it at the CB and keeps the side balance. Check roll on the next mission.</source>
         <translation>Tyngdepunkt y ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder sidebalansen. Kontroller rullen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="67" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="73" />
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="68" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="74" />
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4: it would sink if it lost power there.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4: det ville synke om det mistet strømmen der.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="69" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="75" />
         <source>Net buoyancy %1 at the operating depth is above the band (%2) because the safety margin (%3) and the less buoyant planned points (%4 less) come first.</source>
         <translation>Netto oppdrift %1 på operasjonsdybden er over båndet (%2) fordi sikkerhetsmarginen (%3) og de planlagte punktene med mindre oppdrift (%4 mindre) går foran.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="70" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="76" />
         <source>The net buoyancy band cannot be reached with this kit while keeping the safety margin: no combination of pieces lands between %1 and %2; the nearest safe one is %3.</source>
         <translation>Båndet for netto oppdrift kan ikke nås med dette vektsettet uten å gi opp sikkerhetsmarginen: ingen kombinasjon av lodd lander mellom %1 og %2; den nærmeste sikre er %3.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="71" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="77" />
         <source>The kit has optional pieces (%1) not used in this plan; allowing them may reach the missed band.</source>
         <translation>Vektsettet har valgfrie lodd (%1) som ikke er brukt i denne planen; tillater du dem, kan båndet som ble bommet på kanskje nås.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="72" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="78" />
         <source>The estimate's own uncertainty (pitch %1, roll %2) is wider than a tolerance band; the next mission will tell.</source>
         <translation>Estimatets egen usikkerhet (stamp %1, rull %2) er bredere enn et toleransebånd; neste oppdrag vil vise det.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="73" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="79" />
         <source>Classic table (thesis App. E): %1, pitch error %2, roll error %3; it moves one %4 piece per point and mission, whatever the size of the error.</source>
         <translation>Klassisk tabell (oppgavens vedlegg E): %1, stampavvik %2, rullavvik %3; den flytter ett lodd på %4 per punkt og oppdrag, uansett hvor stort avviket er.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="74" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="80" />
         <source>The classic table asks to remove a piece where none is installed, so it changes nothing.</source>
         <translation>Den klassiske tabellen ber om å fjerne et lodd der ingen er montert, så den endrer ingenting.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="75" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="81" />
         <source>The classic table uses the standard kit only.</source>
         <translation>Den klassiske tabellen bruker bare standard vektsett.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="76" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="82" />
         <source>The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short legs at different speeds); it would bring the uncertainty to about %4 kg.</source>
         <translation>Usikkerheten i netto oppdrift (%1 kg) er for stor for båndet på %2 kg: legg kalibreringsmanøveren til neste oppdrag (%3 korte etapper i ulike hastigheter); den ville bringe usikkerheten ned til omtrent %4 kg.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="77" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="83" />
         <source>Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).</source>
         <translation>Rull er planlagt og forutsagt i marsjfart (%1 o/min, propellmoment inkludert): sidebalansen som holder fartøyet på rett kjøl der, slik oppgaven bedømmer rull (§5.3.3).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="79" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="85" />
         <source>%1 is a constant %2 %3 everywhere (all phases, depths and speeds)</source>
         <translation>%1 er konstant %2 %3 overalt (alle faser, dybder og hastigheter)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="80" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="86" />
         <source>%1 grows %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="81" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="87" />
         <source>%1 shrinks %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="82" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="88" />
         <source>%1 grows %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="83" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="89" />
         <source>%1 shrinks %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="84" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="90" />
         <source>%1 concentrates at %2 %3 (mean %4 %5 against %6 overall)</source>
         <translation>%1 samler seg ved %2 %3 (middel %4 %5 mot %6 totalt)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="85" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="91" />
         <source>%1: no factor of the log explains it</source>
         <translation>%1: ingen faktor i loggen forklarer det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="86" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="92" />
         <source>AUV rigid-body model of the simulator (Fossen form) on smoothed logged states; simulation: replay of the logged commands through the model's autopilot; ballast state: net buoyancy and CG x/y</source>
         <translation>AUV-stivlegememodellen fra simulatoren (Fossen-form) på glattede loggede tilstander; simulering: de loggede kommandoene spilt av gjennom modellens autopilot; ballasttilstand: netto oppdrift og CG x/y</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="87" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="93" />
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state and Cd0</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand og Cd0</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="88" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="94" />
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state, Cd0 and the lift slope</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand, Cd0 og løftestigningstallet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="178" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="184" />
         <source>bringing the CG back towards the CB fore-aft</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="179" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="185" />
         <source>balanced by the other points' fore-aft shares</source>
         <translation>balansert av de andre punktenes andeler forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="180" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="186" />
         <source>bringing the CG back towards the CB sideways</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="181" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="187" />
         <source>balanced by the other points' sideways shares</source>
         <translation>balansert av de andre punktenes andeler sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="225" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="248" />
+        <source>%1: %2 (%3; %4 → %5 of %6).</source>
+        <translation>%1: %2 (%3; %4 → %5 av %6).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="257" />
         <source>%1 is largest during %2: mean %3 %4</source>
         <translation>%1 er størst under %2: middel %3 %4</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="240" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="272" />
         <source>; independent of %1</source>
         <translation>; uavhengig av %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="161" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="167" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="235" />
         <source> and </source>
         <translation> og </translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="165" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="171" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="243" />
         <source>remove %1, then add %2</source>
         <translation>fjern %1, legg så til %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="167" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="173" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="245" />
         <source>remove %1</source>
         <translation>fjern %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="169" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="175" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="247" />
         <source>add %1</source>
         <translation>legg til %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="171" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="177" />
         <source>%1 mm forward</source>
         <translation>%1 mm forover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="172" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="178" />
         <source>%1 mm aft</source>
         <translation>%1 mm akterover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="174" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="180" />
         <source>%1 mm to starboard</source>
         <translation>%1 mm mot styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="175" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="181" />
         <source>%1 mm to port</source>
         <translation>%1 mm mot babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="184" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="190" />
         <source>%1: %2 (%3), which lowers the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som senker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="185" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="191" />
         <source>%1: %2 (%3), which raises the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som øker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
@@ -408,57 +442,57 @@
         <translation>Tyngdepunktet er ikke under oppdriftssenteret etter endringen: fartøyet ville kantre. Kontroller BG og nyttelasten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="59" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="65" />
         <source>The thesis mapping leaves the vehicle %1 heavy.</source>
         <translation>Oppgavens fordeling gjør fartøyet %1 for tungt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="197" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="203" />
         <source>The net buoyancy band %1 to %2 cannot be reached with this kit; best %3</source>
         <translation>Båndet for netto oppdrift %1 til %2 kan ikke nås med dette vektsettet; beste er %3</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="199" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="205" />
         <source>The pitch band ±%1 cannot be reached with this kit (at rest); best %2</source>
         <translation>Stampbåndet ±%1 kan ikke nås med dette vektsettet (i ro); beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="201" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="207" />
         <source>The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet mens stampen holdes i båndet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="203" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="209" />
         <source>The roll band ±%1 cannot be reached with this kit; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="205" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="211" />
         <source>; flying level at %1 m/s it pitches %2°, inside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, innenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="206" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="212" />
         <source>; flying level at %1 m/s it pitches %2°, outside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, utenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="209" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="215" />
         <source>; out of reach whatever the piece sizes: the points' capacities, the installed pieces and the higher priorities limit it</source>
         <translation>; utenfor rekkevidde uansett loddstørrelser: punktenes kapasitet, loddene som er montert og de høyere prioritetene begrenser det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="212" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="218" />
         <source>; a %1 piece would reach it</source>
         <translation>; et lodd på %1 ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="214" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="220" />
         <source>; no single extra piece size tried (%1) would reach it</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="216" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="222" />
         <source>; no single extra piece size tried (%1) would reach it (some were not searched to the end)</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det (noen ble ikke søkt helt ut)</translation>
     </message>
@@ -466,222 +500,222 @@
 <context>
     <name>AdviceWord</name>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="93" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="99" />
         <source>operating</source>
         <translation>operasjonsdybden</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="93" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="99" />
         <source>deepest</source>
         <translation>største dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="94" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="100" />
         <source>surface</source>
         <translation>overflaten</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="94" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="100" />
         <source>transit</source>
         <translation>transitt</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="95" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="101" />
         <source>none</source>
         <translation>ingen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="97" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="103" />
         <source>depth command steps</source>
         <translation>trinn i dybdekommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="97" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="103" />
         <source>pitch command steps</source>
         <translation>trinn i stampkommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="98" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="104" />
         <source>speed changes</source>
         <translation>fartsendringer</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="98" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="104" />
         <source>propeller speed changes</source>
         <translation>endringer i propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="101" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="107" />
         <source>vertical-velocity error</source>
         <translation>avvik i vertikal hastighet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="101" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="107" />
         <source>vertical-force error</source>
         <translation>avvik i vertikal kraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="102" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="108" />
         <source>pitch-moment error</source>
         <translation>avvik i stampmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="102" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="108" />
         <source>roll-moment error</source>
         <translation>avvik i rullmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="103" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="109" />
         <source>depth error</source>
         <translation>dybdeavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="103" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="109" />
         <source>pitch error</source>
         <translation>stampavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="104" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="110" />
         <source>roll error</source>
         <translation>rullavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="104" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="110" />
         <source>speed error</source>
         <translation>fartsavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="105" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="111" />
         <source>surge-force error</source>
         <translation>avvik i langskipskraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="105" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="111" />
         <source>error</source>
         <translation>avvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="106" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="112" />
         <source>pressure</source>
         <translation>trykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="106" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="112" />
         <source>temperature</source>
         <translation>temperatur</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="107" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="113" />
         <source>time</source>
         <translation>tid</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="107" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="113" />
         <source>speed</source>
         <translation>fart</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="108" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="114" />
         <source>propeller speed</source>
         <translation>propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="108" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="114" />
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="109" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="115" />
         <source>time since an actuator change</source>
         <translation>tid siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="109" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="115" />
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="110" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="116" />
         <source>100 dbar</source>
         <translation>100 dbar</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="110" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="116" />
         <source>degC</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="111" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="117" />
         <source>hour</source>
         <translation>time</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="111" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="117" />
         <source>0.1 m/s</source>
         <translation>0,1 m/s</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="112" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="118" />
         <source>100 rpm</source>
         <translation>100 o/min</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="112" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="118" />
         <source>10 deg of pitch</source>
         <translation>10° stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="113" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="119" />
         <source>10 s since an actuator change</source>
         <translation>10 s siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="114" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="120" />
         <source>below</source>
         <translation>under</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="114" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="120" />
         <source>above</source>
         <translation>over</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="115" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="121" />
         <source>after</source>
         <translation>etter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="115" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="121" />
         <source>before</source>
         <translation>før</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="116" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="122" />
         <source>within</source>
         <translation>innenfor</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="117" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="123" />
         <source>surfaces</source>
         <translation>overflateopphold</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="117" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="123" />
         <source>dives</source>
         <translation>dykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="118" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="124" />
         <source>climbs</source>
         <translation>stigninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="118" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="124" />
         <source>levels</source>
         <translation>planflyvninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="119" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="125" />
         <source>turns</source>
         <translation>svinger</translation>
     </message>
@@ -812,7 +846,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="38" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="39" />
         <source>%1 %2 × %3</source>
         <translation>%1 %2 × %3</translation>
     </message>
@@ -2007,147 +2041,147 @@
 <context>
     <name>auv::ui::FirstMissionResultPage</name>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="39" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="40" />
         <source>add</source>
         <translation>legg til</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="39" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="40" />
         <source>remove</source>
         <translation>fjern</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="43" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="44" />
         <source>no change</source>
         <translation>ingen endring</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="51" />
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="136" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="52" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="137" />
         <source>Ballast change before the first mission</source>
         <translation>Ballastendring før første oppdrag</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="63" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="64" />
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="63" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="64" />
         <source>Change</source>
         <translation>Endring</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="63" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="64" />
         <source>Pieces</source>
         <translation>Lodd</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="69" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="70" />
         <source>Installed now, after the work (what the next mission flies with)</source>
         <translation>Montert nå, etter arbeidet (det neste oppdrag flyr med)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="73" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="74" />
         <source>Export work &amp;order (PDF)…</source>
         <translation>Eksporter &amp;arbeidsordre (PDF)…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="115" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="116" />
         <source>Work order written to %1</source>
         <translation>Arbeidsordre skrevet til %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="115" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="116" />
         <source>Not exported: %1</source>
         <translation>Ikke eksportert: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="123" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="124" />
         <source>Export the work order</source>
         <translation>Eksporter arbeidsordren</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="124" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="125" />
         <source>PDF files (*.pdf)</source>
         <translation>PDF-filer (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="136" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="137" />
         <source>Ballast change after the tank weighing</source>
         <translation>Ballastendring etter tankveiingen</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="144" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="145" />
         <source>Cannot compute: %1</source>
         <translation>Kan ikke beregne: %1</translation>
-    </message>
-    <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="153" />
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="186" />
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="190" />
-        <source>%1 g</source>
-        <translation>%1 g</translation>
     </message>
     <message>
         <location filename="../../ui/pages/first_mission_result_page.cpp" line="154" />
         <location filename="../../ui/pages/first_mission_result_page.cpp" line="187" />
         <location filename="../../ui/pages/first_mission_result_page.cpp" line="191" />
+        <source>%1 g</source>
+        <translation>%1 g</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="155" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="188" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="192" />
         <source>%1 kg</source>
         <translation>%1 kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="155" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="156" />
         <source>neutral</source>
         <translation>nøytral</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="156" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="157" />
         <source>too light</source>
         <translation>for lett</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="157" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="158" />
         <source>too heavy</source>
         <translation>for tung</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="158" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="159" />
         <source>Weighed %1 kg; buoyancy %2 kg in %3 kg/m³ water → net buoyancy %4 (%5). CG − CB: x %6 mm, y %7 mm; static pitch %8°, roll %9°.</source>
         <translation>Veid %1 kg; oppdrift %2 kg i %3 kg/m³ vann → netto oppdrift %4 (%5). CG − CB: x %6 mm, y %7 mm; statisk stamp %8°, rull %9°.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="184" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="185" />
         <source>After the change: net buoyancy %1 %2 (band %3..%4), pitch %5° %6 (±%7), roll %8° %9 (±%10).</source>
         <translation>Etter endringen: netto oppdrift %1 %2 (bånd %3..%4), stamp %5° %6 (±%7), rull %8° %9 (±%10).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="199" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="200" />
         <source>⚠ %1</source>
         <translation>⚠ %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="230" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="231" />
         <source>g</source>
         <translation>g</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="230" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="231" />
         <source>kg</source>
         <translation>kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="231" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="232" />
         <source>What is in '%1' now that the work is done (the recommended result is filled in; change it if you installed something else).</source>
         <translation>Det som er i «%1» nå som arbeidet er gjort (det anbefalte resultatet er fylt inn; endre det hvis du monterte noe annet).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="263" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="264" />
         <source>Not saved: %1</source>
         <translation>Ikke lagret: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/first_mission_result_page.cpp" line="266" />
+        <location filename="../../ui/pages/first_mission_result_page.cpp" line="267" />
         <source>Saved configuration %1: weighing, water, recommendation and installed state.</source>
         <translation>Lagret konfigurasjon %1: veiing, vann, anbefaling og montert tilstand.</translation>
     </message>

@@ -12,6 +12,7 @@
 
 #include "analysis/analysis_messages.h"
 #include "ballast/ballast_messages.h"
+#include "firstmission/first_mission_messages.h"
 #include "history/store.h"
 #include "page_walk.h"
 #include "planning/planning_messages.h"
@@ -38,6 +39,7 @@ std::vector<const MessageFormat*> coreFormats() {
   std::vector<const MessageFormat*> all(std::begin(analysis::msg::kAll), std::end(analysis::msg::kAll));
   all.insert(all.end(), std::begin(planning::msg::kAll), std::end(planning::msg::kAll));
   all.insert(all.end(), std::begin(ballast::msg::kAll), std::end(ballast::msg::kAll));
+  all.insert(all.end(), std::begin(firstmission::msg::kAll), std::end(firstmission::msg::kAll));
   return all;
 }
 
@@ -202,6 +204,38 @@ TEST_F(AdviceNorwegian, AnalysisAndAdjustmentPagesHaveNoEnglishAdvice) {
   }
   EXPECT_EQ(wiz.currentId(), OperatorWizard::kSummary) << wiz.state().last_error;
   EXPECT_TRUE(saw_check);
+}
+
+// The HUGIN first mission under Norwegian: the solver's notes and warnings on
+// the result page (what to do at each point, the priorities, the bands the
+// kit cannot reach) are Norwegian, none of core's English is left.
+TEST_F(AdviceNorwegian, FirstMissionResultHasNoEnglishAdvice) {
+  Norwegian nb;
+  ASSERT_TRUE(nb.ok);
+  OperatorWizard wiz(makeDemoState(AUV_RESOURCE_DIR));
+  wiz.setClock(fixedNow);
+  wiz.setAutosaveEnabled(false);
+  wiz.resize(1000, 760);
+  wiz.show();
+  for (int pages = 0; wiz.currentId() != OperatorWizard::kFirstMissionResult && pages < 8; ++pages) {
+    auv::testing::settlePage(wiz);
+    wiz.next();
+  }
+  ASSERT_EQ(wiz.currentId(), OperatorWizard::kFirstMissionResult) << wiz.state().last_error;
+  ASSERT_TRUE(wiz.state().report.has_value());
+  const FirstMissionReport& r = *wiz.state().report;
+  std::vector<Message> msgs = r.notes;
+  msgs.insert(msgs.end(), r.warnings.begin(), r.warnings.end());
+  ASSERT_GE(msgs.size(), 5u);  // four points, priorities, after the move
+  const QString shown = find<QLabel>(*wiz.currentPage(), "messages")->text();
+  for (const Message& m : msgs) {
+    EXPECT_FALSE(m.id().empty()) << "first mission: advice without an id: " << m;
+    EXPECT_EQ(shown.indexOf(QString::fromStdString(m)), -1) << "core's English left: " << m;
+  }
+  EXPECT_NE(shown.indexOf("Prioriteringer"), -1) << shown.toStdString();
+  EXPECT_NE(shown.indexOf("Etter flyttingen"), -1) << shown.toStdString();
+  EXPECT_EQ(shown.indexOf("remove "), -1) << shown.toStdString();
+  EXPECT_EQ(shown.indexOf("no change"), -1) << shown.toStdString();
 }
 
 }  // namespace auv::ui

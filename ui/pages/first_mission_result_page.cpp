@@ -24,6 +24,7 @@
 #include "widgets/fit_scroll_area.h"
 #include "widgets/inputs.h"
 #include "widgets/weight_map_widget.h"
+#include "wizard/advice_text.h"
 #include "wizard/history_save.h"
 #include "wizard/operator_wizard.h"
 #include "wizard/work_order.h"
@@ -196,8 +197,8 @@ void FirstMissionResultPage::showReport(const FirstMissionReport& r) {
                           .arg(band(std::abs(r.predicted.roll_deg) <= spec.roll_tolerance_deg))
                           .arg(spec.roll_tolerance_deg, 0, 'f', 1));
   QStringList msgs;
-  for (const auto& w : r.warnings) msgs << tr("⚠ %1").arg(QString::fromStdString(w));
-  for (const auto& n : r.notes) msgs << QString::fromStdString(n);
+  for (const auto& w : r.warnings) msgs << tr("⚠ %1").arg(adviceText(w));
+  for (const auto& n : r.notes) msgs << adviceText(n);
   // Core's advice names points by their profile ids (fore_port); the
   // technician reads the profile's labels (the longest id first, so that
   // "fore_port" is not half-replaced inside a longer id).

@@ -56,6 +56,12 @@ constexpr Advice kAdvice[] = {
   {"ballast.stays_heavy", QT_TRANSLATE_NOOP("Advice", "The vehicle stays %1 heavy even with every removable piece out: it needs added buoyancy or a lighter payload.")},
   {"ballast.node_limit", QT_TRANSLATE_NOOP("Advice", "The search stopped at its limit: this is the best change found, not a proved optimum.")},
   {"ballast.capsize", QT_TRANSLATE_NOOP("Advice", "The CG is not below the CB after the change: the vehicle would capsize. Check BG and the payload.")},
+  {"ballast.point_no_change", QT_TRANSLATE_NOOP("Advice", "%1: no change (%2 stays).")},
+  {"ballast.priorities", QT_TRANSLATE_NOOP("Advice", "Priorities (thesis §5.4): net buoyancy %1 to %2 and never negative, then pitch within ±%3, then roll within ±%4; %5 piece(s) to handle.")},
+  {"ballast.after_move", QT_TRANSLATE_NOOP("Advice", "After the move: net buoyancy %1, pitch %2, roll %3.")},
+  {"ballast.half_way", QT_TRANSLATE_NOOP("Advice", "Half-way policy: this move aims at about half of the needed change (net buoyancy %1 to %2, pitch %3, roll %4); check the vehicle again and repeat.")},
+  // First mission (core/firstmission/first_mission_messages.h).
+  {"first_mission.capsize", QT_TRANSLATE_NOOP("Advice", "The CG is not below the CB with the BG of the vehicle profile: the vehicle would capsize. Check BG in the vehicle profile.")},
   {"ballast.thesis_heavy", QT_TRANSLATE_NOOP("Advice", "The thesis mapping leaves the vehicle %1 heavy.")},
   // Pre-mission plan (core/planning/planning_messages.h).
   {"plan.no_change", QT_TRANSLATE_NOOP("Advice", "No change: the vehicle is already as good as the kit allows.")},
@@ -217,6 +223,32 @@ QString bandUnreachable(const std::vector<std::string>& a) {
   return s + ".";
 }
 
+// ballast.point: name, signed change, before, after, capacity, number of
+// removals, then the pieces, removals first (core/ballast/solution_text.cpp).
+QString pointText(const std::vector<std::string>& a) {
+  if (a.size() < 7) return {};
+  auto q = [](const std::string& s) { return QString::fromStdString(s); };
+  const std::size_t n_remove = std::min<std::size_t>(std::stoul(a[5]), a.size() - 6);
+  auto joined = [&](std::size_t from, std::size_t to) {
+    QString out;
+    for (std::size_t i = from; i < to; ++i) {
+      if (i > from) out += i + 1 == to ? QCoreApplication::translate("Advice", " and ") : QStringLiteral(", ");
+      out += q(a[i]);
+    }
+    return out;
+  };
+  const QString removes = joined(6, 6 + n_remove), adds = joined(6 + n_remove, a.size());
+  QString what;
+  if (!removes.isEmpty() && !adds.isEmpty())
+    what = QCoreApplication::translate("Advice", "remove %1, then add %2").arg(removes, adds);
+  else if (!removes.isEmpty())
+    what = QCoreApplication::translate("Advice", "remove %1").arg(removes);
+  else
+    what = QCoreApplication::translate("Advice", "add %1").arg(adds);
+  return QCoreApplication::translate("Advice", "%1: %2 (%3; %4 → %5 of %6).")
+      .arg(q(a[0]), what, q(a[1]), q(a[2]), q(a[3]), q(a[4]));
+}
+
 // check.largest_during: what, phase, mean, unit, then (phase, mean) pairs of
 // the other phases (core/discrepancy/check_messages.h).
 QString largestDuring(const std::vector<std::string>& a) {
@@ -244,6 +276,10 @@ QString checkSummary(const std::vector<std::string>& a) {
 }  // namespace
 
 QString adviceText(const Message& m) {
+  if (m.id() == "ballast.point") {
+    const QString s = pointText(m.args());
+    if (!s.isEmpty()) return s;
+  }
   if (m.id() == "check.largest_during") {
     const QString s = largestDuring(m.args());
     if (!s.isEmpty()) return s;

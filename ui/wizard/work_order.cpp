@@ -122,8 +122,8 @@ WorkOrder makeFirstMissionWorkOrder(const WizardState& s, TimePoint now) {
              << WorkOrder::tr("Roll %1° (band ±%2°): %3")
                     .arg(signedFixed(t.roll_deg, 2), fixed(spec.roll_tolerance_deg, 1))
                     .arg(inBand(std::abs(t.roll_deg) <= spec.roll_tolerance_deg));
-  for (const auto& x : r.warnings) w.warnings << q(x);
-  for (const auto& x : r.notes) w.notes << q(x);
+  for (const auto& x : r.warnings) w.warnings << adviceText(x);
+  for (const auto& x : r.notes) w.notes << adviceText(x);
   w.signature = WorkOrder::tr("Done by: ______________________   Signature: ______________________   Date: ____________");
   return w;
 }

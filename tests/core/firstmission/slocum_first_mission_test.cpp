@@ -33,7 +33,8 @@ const PointRecommendation& point(const FirstMissionReport& r, const std::string&
   throw std::runtime_error("no point " + name);
 }
 
-bool anyContains(const std::vector<std::string>& v, const std::string& s) {
+template <class Text>
+bool anyContains(const std::vector<Text>& v, const std::string& s) {
   for (const auto& x : v) {
     if (x.find(s) != std::string::npos) return true;
   }
