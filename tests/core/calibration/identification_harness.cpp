@@ -27,7 +27,8 @@ const std::string kResources = AUV_RESOURCE_DIR;
 VehicleProfile nominalProfile() {
   VehicleProfile p = loadVehicleProfile(kResources + "/vehicles/hugin1000.json");
   const nlohmann::json doc = JsonReader::parseFile(kResources + "/sim/hugin1000_hydrodynamics.json");
-  for (const char* k : {"hydrodynamics", "actuators", "sim_assumptions"}) p.sections[k] = doc[k];
+  // As the catalog merges the companion (vehicle_catalog.cpp), autopilot included.
+  for (const char* k : {"hydrodynamics", "actuators", "sim_assumptions", "autopilot"}) p.sections[k] = doc[k];
   return p;
 }
 
@@ -80,7 +81,9 @@ Harness::Harness()
 CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string& dump_prefix) const {
   CaseResult r;
   r.truth = sim::drawTruth(seed);
-  const sim::SurveyMission m = sim::makeSurveyMission(seed);
+  sim::SurveyRanges ranges;
+  ranges.trace_interval_s = log_interval_s;
+  const sim::SurveyMission m = sim::makeSurveyMission(seed, ranges);
   r.speeds = static_cast<int>(m.rpms.size());
   r.depths = static_cast<int>(m.depths_m.size());
   const sim::VehicleModel truth = sim::truthModel(nominal_.model, r.truth);
