@@ -209,8 +209,26 @@ void fitTransients(const Solved& s, const TransientResiduals& tr, double steady_
   for (Eigen::Index i = 1; i < rt.size(); ++i) num += rt(i) * rt(i - 1);
   const double rho = std::clamp(num / std::max(1e-30, rt.squaredNorm()), 0.0, 0.99);
   const double inflation = std::max(1.0, chi2 * (1 + rho) / (1 - rho));
+  // Consistency with the steady legs alone (whose coverage is honest): the
+  // joint estimate of net buoyancy and CG x may move from theirs by what
+  // the transients add, Var(d) = C_steady - C_joint; a larger move is
+  // model error in the transients, and their information is divided by it.
+  const Eigen::MatrixXd cov_steady = out.cov;
+  double inflation_used = inflation;
+  Eigen::MatrixXd cov_j = (s.data_info / steady_inflation + prior_info + Jt.transpose() * Jt / inflation).inverse();
+  for (int round = 0; round < 4; ++round) {
+    double worst = 0.0;
+    for (int k : {static_cast<int>(kNet), static_cast<int>(kXg)}) {
+      const double d = p(k) - s.p(k);
+      const double var = std::max(cov_steady(k, k) - cov_j(k, k), 1e-6 * cov_steady(k, k));
+      worst = std::max(worst, d * d / var);
+    }
+    if (worst <= 1.0) break;
+    inflation_used *= worst;
+    cov_j = (s.data_info / steady_inflation + prior_info + Jt.transpose() * Jt / inflation_used).inverse();
+  }
   out.p = p;
-  out.cov = (s.data_info / steady_inflation + prior_info + Jt.transpose() * Jt / inflation).inverse();
+  out.cov = cov_j;
   // Linearised jackknife over the windows: without window i the optimum
   // moves by (H - J_i'J_i)^-1 J_i' r_i. Their spread is model error the
   // residual statistics cannot see (every window fitted well, but each to
@@ -231,12 +249,16 @@ void fitTransients(const Solved& s, const TransientResiduals& tr, double steady_
     Eigen::MatrixXd jk = Eigen::MatrixXd::Zero(p.size(), p.size());
     for (const Eigen::VectorXd& di : d) jk += (di - mean) * (di - mean).transpose();
     jk *= static_cast<double>(ng - 1) / static_cast<double>(ng);
+    // n - 1 degrees of freedom: widen to the Student t quantile of 2 sigma.
+    static constexpr double kT975[] = {12.71, 4.30, 3.18, 2.78, 2.57, 2.45, 2.36, 2.31, 2.26, 2.23, 2.20, 2.18, 2.16, 2.14};
+    const double t = ng - 1 <= 14 ? kT975[ng - 2] : 1.96 + 2.5 / static_cast<double>(ng - 1);
+    jk *= (t / 1.96) * (t / 1.96);
     out.cov += jk;
     out.transient_jackknife_net_sigma_n = std::sqrt(std::max(0.0, jk(kNet, kNet)));
   }
   out.transient_residuals = static_cast<std::size_t>(rt.size());
   out.transient_chi2_per_residual = chi2;
-  out.transient_inflation = inflation;
+  out.transient_inflation = inflation_used;
 }
 
 }  // namespace
