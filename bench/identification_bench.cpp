@@ -5,7 +5,9 @@
 // analysis given only the nominal profile: median and 90th percentile
 // |error| of net buoyancy, CG x, CG y, 2-sigma coverage, the closed loop
 // after one move, and the analysis time of a 3 h 1 Hz and a 24 h 10 Hz log.
-//   identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose]
+//   identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S]
+// (--log-interval: row interval of the flown logs, default 1 s; --transients:
+// the analysis also fits the transients, auv_transient_fit.h)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -50,6 +52,7 @@ double timeAnalysis(const identification::Harness& h, double duration_s, double 
   analysis::AnalysisOptions a;
   a.installed_kg = {7.2, 7.2, 25.2, 25.2};
   a.bg_m = 0.02;
+  a.use_transients = h.use_transients;
   double best = 1e30;
   for (int k = 0; k < 3; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -67,6 +70,8 @@ int main(int argc, char** argv) {
   int truths = 50;
   std::uint64_t seed = 1100;
   bool loop = true, timing = true, verbose = false;
+  double log_interval_s = 1.0;
+  bool transients = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--truths" && i + 1 < argc) truths = std::atoi(argv[++i]);
@@ -74,6 +79,8 @@ int main(int argc, char** argv) {
     else if (a == "--no-loop") loop = false;
     else if (a == "--no-timing") timing = false;
     else if (a == "--verbose") verbose = true;
+    else if (a == "--log-interval" && i + 1 < argc) log_interval_s = std::atof(argv[++i]);
+    else if (a == "--transients") transients = true;
     else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: log and report of one truth
       const identification::Harness h;
       const auto r = h.run(std::strtoull(argv[i + 1], nullptr, 10), false, argv[i + 2]);
@@ -81,11 +88,13 @@ int main(int argc, char** argv) {
       return 0;
     }
     else {
-      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose]\n");
+      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients]\n");
       return 2;
     }
   }
-  const identification::Harness h;
+  identification::Harness h;
+  h.log_interval_s = log_interval_s;
+  h.use_transients = transients;
   std::vector<double> en, ex, ey;
   int known = 0, cov_n = 0, cov_x = 0, cov_y = 0, y_known = 0;
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;

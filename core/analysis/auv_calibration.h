@@ -18,6 +18,7 @@
 // the pitch moments. What the log does not constrain stays at its prior and
 // keeps its prior width in the sigmas of net buoyancy and CG x.
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,7 +53,19 @@ struct CalibrationSegment {
   double moment_offset_nm = 0.0;
 };
 
-enum CalibrationIndex { kNet = 0, kXg, kHeave, kPitchUw, kCrossflow, kPlanes, kPlaneOffset, kBg, kCalibrationCount };
+// kPitchDamping (M_q scale) only acts in the transients; steady legs leave it at its prior.
+enum CalibrationIndex { kNet = 0, kXg, kHeave, kPitchUw, kCrossflow, kPlanes, kPlaneOffset, kBg, kPitchDamping, kCalibrationCount };
+
+// Whitened output-error residuals of the log's transients at the parameters
+// p (auv_transient_fit.h); empty = steady legs only.
+// group_ends: where each window's residuals end (for the jackknife over
+// windows that measures how far the windows disagree).
+struct TransientResiduals {
+  std::function<Eigen::VectorXd(const Eigen::VectorXd& p)> residuals;
+  std::vector<Eigen::Index> group_ends;
+  std::function<void(const Eigen::VectorXd& p)> reweight;  // optional: channel sigmas from the misfit at p
+  explicit operator bool() const { return static_cast<bool>(residuals) && !group_ends.empty(); }
+};
 
 struct SteadyCalibration {
   bool ok = false;
@@ -62,13 +75,19 @@ struct SteadyCalibration {
   double data_parameters = 0.0;  // effective number of parameters the data determined
   std::vector<CalibrationParameter> parameters;  // hydrodynamic groups only
   double elevator_offset_deg = 0.0, elevator_offset_sigma_deg = 0.0;
+  // Transients (when given): residual count, chi2 per residual at the
+  // optimum and the factor their information was divided by.
+  std::size_t transient_residuals = 0;
+  double transient_chi2_per_residual = 0.0, transient_inflation = 1.0;
+  double transient_jackknife_net_sigma_n = 0.0;  // the windows' scatter, added to the posterior
 };
 
 // Nominal linear pitch-moment derivative m_uw at density rho for a Munk factor.
 double pitchMomentUw(const SteadyHydroCoefficients& c, double rho, double munk_factor);
 
 SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double weight_n, double rho_ref,
-                                  const std::vector<CalibrationSegment>& segments, const CalibrationPriors& priors);
+                                  const std::vector<CalibrationSegment>& segments, const CalibrationPriors& priors,
+                                  const TransientResiduals& transients = {});
 
 // The posterior covariance after adding planned steady segments (a short
 // calibration manoeuvre) to the log: posterior information plus the planned

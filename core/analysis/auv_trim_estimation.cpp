@@ -394,7 +394,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     cs.push_back(c);
     ++history_used;
   }
-  const SteadyCalibration cal = calibrateSteady(*coeffs, m.W, m.rho, cs, pri);
+  const SteadyCalibration cal = calibrateSteady(*coeffs, m.W, m.rho, cs, pri, ctx.transients);
   out.history_segments_used = history_used;
   if (history_used > 0)
     out.notes.push_back(Message(msg::kHistoryCalibration, {std::to_string(history_used)}));

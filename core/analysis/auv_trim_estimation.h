@@ -61,6 +61,10 @@ struct AuvTrimContext {
   double profile_torque_nm_per_100rpm2 = 0.0;
   double min_speed2_spread = 1.3;       // max(u^2)/min(u^2) needed to fit the elevator zero offset
   bool log_has_speed = false, log_has_elevator = false, log_has_rpm = false;
+  // The log's transients through the simulator (auv_transient_fit.h), fitted
+  // jointly with the steady segments; empty = steady segments only.
+  TransientResiduals transients;
+  std::size_t transient_windows = 0;
 };
 
 struct AuvTrimEstimate {

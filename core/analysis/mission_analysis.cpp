@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "analysis/auv_steady_model.h"
+#include "analysis/auv_transient_fit.h"
 #include "analysis/auv_trim_estimation.h"
 #include "analysis/classic_thesis.h"
 #include "analysis/glider_trim.h"
@@ -18,6 +19,7 @@
 #include "common/input_error.h"
 #include "common/units.h"
 #include "seawater/seawater.h"
+#include "sim/model_loader.h"
 #include "vehicle/json_reader.h"
 #include "vehicle/installed_check.h"
 
@@ -331,6 +333,38 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
         s.from_history = true;
         ctx.history.push_back(s);
       }
+    }
+    // The transients (depth steps, propeller-speed changes) flown again
+    // through the profile's simulator model join the calibration.
+    std::optional<TransientFit> transient_fit;
+    if (o.use_transients && coeffs && coeffs->has_planes && ctx.log_has_elevator && ctx.log_has_speed) {
+      std::optional<sim::VehicleModel> model;
+      sim::DepthAutopilotConfig autopilot;
+      try {
+        model = sim::loadVehicleModel(v);
+        autopilot = sim::loadAutopilotConfig(v);
+      } catch (const std::exception&) {
+        // No simulator sections in this profile: steady segments only (said in the notes below).
+      }
+      if (model) {
+        TransientFitContext tc;
+        tc.weight_n = ctx.weight_n;
+        tc.density_ref_kgm3 = rho;
+        tc.buoyancy_ref_n = units::g0 * Bref;
+        tc.autopilot = autopilot;
+        for (std::size_t i = 0; i < o.installed_kg.size() && i < v.points.size(); ++i) {
+          const Eigen::Vector3d r = v.points[i].position_m - model->body.cb_profile_m;
+          tc.extra_Iyy_kgm2 += o.installed_kg[i] * (r.x() * r.x() + r.z() * r.z());
+        }
+        transient_fit.emplace(log, *model, tc);
+        if (transient_fit->residualCount() > 0) {
+          ctx.transients.residuals = [&f = *transient_fit](const Eigen::VectorXd& p) { return f.residuals(p); };
+          ctx.transients.group_ends = transient_fit->windowEnds();
+          ctx.transients.reweight = [&f = *transient_fit](const Eigen::VectorXd& p) { f.rescaleChannels(p); };
+          ctx.transient_windows = transient_fit->windowCount();
+        }
+      }
+      rep.details["transient_windows"] = ctx.transient_windows;
     }
     const AuvTrimEstimate e = estimateAuvTrim(means, coeffs ? &*coeffs : nullptr, why, ctx);
     for (std::size_t w = 0; w < nw; ++w)

@@ -40,6 +40,11 @@ struct AnalysisOptions {
   // (--coefficient-sigma); unset = 30 % and an unknown Munk structure.
   std::optional<double> coefficient_rel_sigma;
   double bg_profile_rel_sigma = 0.25;
+  // Fit the log's transients through the simulator jointly with the steady
+  // legs (auv_transient_fit.h) when the profile has the simulator sections
+  // and the log has pitch_cmd. Off by default: on the identification bench
+  // its 2-sigma coverage is still below 90 % (see README, issue 11).
+  bool use_transients = false;
   double default_density_kgm3 = 1025.0;  // only when the log has no CTD
   // Gliders
   double glider_min_depth_m = 10.0;

@@ -27,7 +27,8 @@ const std::string kResources = AUV_RESOURCE_DIR;
 VehicleProfile nominalProfile() {
   VehicleProfile p = loadVehicleProfile(kResources + "/vehicles/hugin1000.json");
   const nlohmann::json doc = JsonReader::parseFile(kResources + "/sim/hugin1000_hydrodynamics.json");
-  for (const char* k : {"hydrodynamics", "actuators", "sim_assumptions"}) p.sections[k] = doc[k];
+  // As the catalog merges the companion (vehicle_catalog.cpp), autopilot included.
+  for (const char* k : {"hydrodynamics", "actuators", "sim_assumptions", "autopilot"}) p.sections[k] = doc[k];
   return p;
 }
 
@@ -63,8 +64,10 @@ Flown fly(const sim::VehicleModel& truth, const sim::DepthAutopilotConfig& ap, c
   return f;
 }
 
-analysis::AnalysisReport analyse(const Flown& f, const VehicleProfile& p, const std::vector<double>& installed) {
+analysis::AnalysisReport analyse(const Flown& f, const VehicleProfile& p, const std::vector<double>& installed,
+                                 bool transients) {
   analysis::AnalysisOptions a;
+  a.use_transients = transients;
   a.log_name = "identification";
   a.installed_kg = installed;
   a.bg_m = f.bg_m;  // a roll test measures BG of the vehicle as it is
@@ -80,7 +83,9 @@ Harness::Harness()
 CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string& dump_prefix) const {
   CaseResult r;
   r.truth = sim::drawTruth(seed);
-  const sim::SurveyMission m = sim::makeSurveyMission(seed);
+  sim::SurveyRanges ranges;
+  ranges.trace_interval_s = log_interval_s;
+  const sim::SurveyMission m = sim::makeSurveyMission(seed, ranges);
   r.speeds = static_cast<int>(m.rpms.size());
   r.depths = static_cast<int>(m.depths_m.size());
   const sim::VehicleModel truth = sim::truthModel(nominal_.model, r.truth);
@@ -92,7 +97,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   const Flown f = fly(truth, nominal_.autopilot, m, installed, err, seed * 7 + 1, kInstalled);
 
   const auto t0 = std::chrono::steady_clock::now();
-  const analysis::AnalysisReport rep = analyse(f, profile_, kInstalled);
+  const analysis::AnalysisReport rep = analyse(f, profile_, kInstalled, use_transients);
   r.analysis_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // Through the JSON contract, so the harness also measures code from before the calibration.
   const nlohmann::json rj = analysis::toJson(rep);
@@ -191,6 +196,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   a2.installed_kg = after;
   a2.bg_m = f2.bg_m;
   a2.history = {{rep.steady_segments, kInstalled}};
+  a2.use_transients = use_transients;
   const analysis::AnalysisReport rep2 = analysis::analyzeMission(f2.log, profile_, a2);
   r.looped = true;
   judge(f2, rep2, r.one);
@@ -198,7 +204,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   // The second move, planned from the jointly calibrated second mission.
   const auto [plan2, after2] = planFrom(analysis::toJson(rep2), after);
   const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2);
-  judge(f3, analyse(f3, profile_, after2), r.two);
+  judge(f3, analyse(f3, profile_, after2, use_transients), r.two);
   r.twice = true;
   r.net2_err_kg = rep2.net_buoyancy_kg.value - (rep2.density_kgm3.mean * profile_.hull.volumeAt(rep2.temperature_degC.mean, rep2.pressure_dbar.mean) - f2.mass_kg);
   r.net2_sigma_kg = rep2.net_buoyancy_kg.sigma;

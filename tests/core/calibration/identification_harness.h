@@ -46,6 +46,10 @@ class Harness {
   // dump_prefix non-empty: writes <prefix>.csv (the first log) and <prefix>.json (its report).
   CaseResult run(std::uint64_t seed, bool closed_loop, const std::string& dump_prefix = "") const;
   const VehicleProfile& profile() const { return profile_; }
+  // Log row interval of the flown missions (the survey's default: 1 s).
+  double log_interval_s = 1.0;
+  // Fit the transients jointly with the steady legs (AnalysisOptions::use_transients).
+  bool use_transients = false;
 
  private:
   VehicleProfile profile_;      // nominal profile with its companion hydrodynamics: all the analysis gets
