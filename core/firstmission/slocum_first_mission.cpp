@@ -6,6 +6,7 @@
 
 #include "common/input_error.h"
 #include "common/units.h"
+#include "firstmission/first_mission_messages.h"
 #include "hydrostatics/static_trim.h"
 #include "weighing/disk_weights.h"
 #include "weighing/roll_correction.h"
@@ -14,6 +15,8 @@
 
 namespace auv {
 namespace {
+
+namespace msg = firstmission::msg;
 
 double toG(double kg) { return kg * 1000.0; }
 double toMm(double m) { return units::mToMm(m); }
@@ -55,12 +58,11 @@ nlohmann::json swappedJson(const SlocumLayout& L, const DiskArrangement& a) {
 std::string side(double v, const char* pos, const char* neg) { return v >= 0.0 ? pos : neg; }
 
 // One sentence for a pair of bottles changed by the tank step.
-std::string bottlePairNote(const char* pair, SlocumItem a, SlocumItem c, const SlocumBallast& from,
-                           const SlocumBallast& to, double scale_after_kg) {
+Message bottlePairNote(const MessageFormat& pair, SlocumItem a, SlocumItem c, const SlocumBallast& from,
+                       const SlocumBallast& to, double scale_after_kg) {
   const double da = to.at(a) - from.at(a), dc = to.at(c) - from.at(c);
-  return std::string(pair) + ": " + signedG(da) + " in " + slocumItemName(a) + " and " + signedG(dc) + " in " +
-         slocumItemName(c) + " (" + signedG(da + dc) + ") so the " + (a == kForePort ? "bow" : "aft") +
-         " scale would read " + gText(scale_after_kg) + " and the glider floats level.";
+  return Message(pair, {signedG(da), slocumItemName(a), signedG(dc), slocumItemName(c), signedG(da + dc),
+                        gText(scale_after_kg)});
 }
 
 FirstMissionReport compute(const VehicleProfile& v, const TankWeighing& w);
@@ -180,90 +182,80 @@ FirstMissionReport compute(const VehicleProfile& v, const TankWeighing& w) {
   r.predicted.roll_deg = units::radToDeg(trim_final.roll_rad);
 
   // --- notes: one sentence per finding or change ---
-  r.notes.push_back("In the tank (" + fmt("%.1f kg/m3", readings.tank.density_kgm3) + ", " +
-                    fmt("%.1f degC", readings.tank.temperature_degC) + ") the glider displaces " +
-                    fmt("%.4f kg", tank.tank_neutral_mass_kg) + " (" + fmt("%.6f m3", tank.volume_tank_m3) +
-                    "); at " + fmt("%.1f degC", readings.target.temperature_degC) + " the hull measures " +
-                    fmt("%.6f m3", tank.volume_target_m3) + ", neutral at " +
-                    fmt("%.4f kg", tank.target_neutral_mass_kg) + " in " +
-                    fmt("%.1f kg/m3", readings.target.density_kgm3) + " water.");
-  r.notes.push_back("It weighs " + fmt("%.3f kg", M_now) + ", so it is " + fmt("%.1f g", toG(std::abs(r.net_buoyancy_kg))) +
-                    (r.net_buoyancy_kg >= 0 ? " light" : " heavy") + ": the bottles change by " +
-                    signedG(step.total_change_kg) + " (rounded down to whole grams so it never ends heavy).");
+  r.notes.push_back(Message(
+      msg::kTankDisplaces,
+      {fmt("%.1f kg/m3", readings.tank.density_kgm3), fmt("%.1f degC", readings.tank.temperature_degC),
+       fmt("%.4f kg", tank.tank_neutral_mass_kg), fmt("%.6f m3", tank.volume_tank_m3),
+       fmt("%.1f degC", readings.target.temperature_degC), fmt("%.6f m3", tank.volume_target_m3),
+       fmt("%.4f kg", tank.target_neutral_mass_kg), fmt("%.1f kg/m3", readings.target.density_kgm3)}));
+  r.notes.push_back(Message(r.net_buoyancy_kg >= 0 ? msg::kWeighsLight : msg::kWeighsHeavy,
+                            {fmt("%.3f kg", M_now), fmt("%.1f g", toG(std::abs(r.net_buoyancy_kg))),
+                             signedG(step.total_change_kg)}));
   if (step.after.at(kForePort) != now.at(kForePort) || step.after.at(kForeStarboard) != now.at(kForeStarboard)) {
-    r.notes.push_back(bottlePairNote("Bow bottles", kForePort, kForeStarboard, now, step.after, step.bow_scale_after_kg));
+    r.notes.push_back(bottlePairNote(msg::kBowBottles, kForePort, kForeStarboard, now, step.after, step.bow_scale_after_kg));
   }
   if (step.after.at(kAftUpper) != now.at(kAftUpper) || step.after.at(kAftLower) != now.at(kAftLower)) {
-    r.notes.push_back(bottlePairNote("Aft bottles", kAftUpper, kAftLower, now, step.after, step.aft_scale_after_kg));
+    r.notes.push_back(bottlePairNote(msg::kAftBottles, kAftUpper, kAftLower, now, step.after, step.aft_scale_after_kg));
   }
   r.warnings.assign(step.warnings.begin(), step.warnings.end());
 
   if (!test) {
-    r.notes.push_back("No roll test recorded: set the bottles, hang the glider for the roll test (report 4.2) and "
-                      "run again with after_tank_step_g and roll_test filled in; CG height is the profile's bg_mm.");
+    r.notes.push_back(Message(msg::kNoRollTest));
   } else {
     r.warnings.insert(r.warnings.end(), test->warnings.begin(), test->warnings.end());
-    r.notes.push_back("Roll test: h = " + fmt("%.2f mm", toMm(test->h_m)) + " from " +
-                      std::to_string(test->h_each_m.size()) + " hung masses, so G sits " +
-                      fmt("%.2f mm", toMm(std::abs(cg_now[0]))) + side(cg_now[0], " to starboard", " to port") +
-                      " of B and " + fmt("%.2f mm", toMm(cg_now[1])) + " below it.");
+    r.notes.push_back(Message(msg::kRollTest, {fmt("%.2f mm", toMm(test->h_m)), std::to_string(test->h_each_m.size()),
+                                               fmt("%.2f mm", toMm(std::abs(cg_now[0]))),
+                                               side(cg_now[0], "starboard", "port"), fmt("%.2f mm", toMm(cg_now[1]))}));
     const RollOption& ro = roll->best();
     if (std::abs(ro.rail_shift_kg) > 0.0) {
-      r.notes.push_back("Move " + gText(std::abs(ro.rail_shift_kg)) + " of rail weight from the " +
-                        side(ro.rail_shift_kg, "port to the starboard", "starboard to the port") +
-                        " wing rail, because the battery alone cannot reach the roll.");
+      r.notes.push_back(Message(msg::kMoveRail, {gText(std::abs(ro.rail_shift_kg)),
+                                                 side(ro.rail_shift_kg, "port to the starboard", "starboard to the port")}));
     }
     if (std::abs(ro.bottle_shift_kg) > 0.0) {
-      r.notes.push_back("Move " + gText(std::abs(ro.bottle_shift_kg)) + " of lead from the " +
-                        side(ro.bottle_shift_kg, "port to the starboard", "starboard to the port") +
-                        " bow bottle, because the battery" + (ro.method == RollMethod::RailsAndBottles ? " and wing rails" : "") +
-                        " cannot reach the roll.");
+      r.notes.push_back(Message(ro.method == RollMethod::RailsAndBottles ? msg::kMoveBowBottleRails : msg::kMoveBowBottle,
+                                {gText(std::abs(ro.bottle_shift_kg)),
+                                 side(ro.bottle_shift_kg, "port to the starboard", "starboard to the port")}));
     }
-    r.notes.push_back("Set the roll battery to " + fmt("%+.4f rad", ro.battery_angle_rad) + " (" +
-                      fmt("%+.2f deg", units::radToDeg(ro.battery_angle_rad)) +
-                      side(ro.battery_angle_rad, ", toward starboard", ", toward port") + ", now " +
-                      fmt("%+.4f rad", now.battery_angle_rad) + ") to bring G straight below B.");
+    r.notes.push_back(Message(msg::kRollBattery, {fmt("%+.4f rad", ro.battery_angle_rad),
+                                                  fmt("%+.2f deg", units::radToDeg(ro.battery_angle_rad)),
+                                                  side(ro.battery_angle_rad, "starboard", "port"),
+                                                  fmt("%+.4f rad", now.battery_angle_rad)}));
     if (roll->chosen < 0) {
-      r.warnings.push_back("the battery, wing rails and bow bottles together cannot cancel the roll: " +
-                           fmt("%.2f deg", units::radToDeg(std::atan2(ro.cg_yz_m[0], ro.cg_yz_m[1]))) +
-                           " remains; move other masses sideways");
+      r.warnings.push_back(
+          Message(msg::kRollRemains, {fmt("%.2f deg", units::radToDeg(std::atan2(ro.cg_yz_m[0], ro.cg_yz_m[1])))}));
     }
     const DiskArrangement& da = harm->best();
     for (std::size_t k = 0; k < 3; ++k) {
       if (!da.swap[k]) continue;
       const DiskSeats& s = ro.after.disks[k];
       const double dz = (s.top_kg - s.bottom_kg) * (L.disks[k].bottom_z_m - L.disks[k].top_z_m) / M;
-      r.notes.push_back("Swap disk column " + L.disks[k].name + " (" + gText(s.top_kg) + " top, " +
-                        gText(s.bottom_kg) + " bottom), which " + (dz >= 0 ? "lowers" : "raises") + " G by " +
-                        fmt("%.2f mm", toMm(std::abs(dz))) + ".");
+      r.notes.push_back(Message(msg::kSwapDisks, {L.disks[k].name, gText(s.top_kg), gText(s.bottom_kg),
+                                                  dz >= 0 ? "lowers" : "raises", fmt("%.2f mm", toMm(std::abs(dz)))}));
     }
     if (std::abs(da.aft_shift_kg) > 0.0) {
-      r.notes.push_back("Move " + gText(std::abs(da.aft_shift_kg)) + " of lead from the " +
-                        side(da.aft_shift_kg, "lower to the upper", "upper to the lower") + " aft bottle, so h goes from " +
-                        fmt("%.2f mm", toMm(da.h_after_swap_m)) + " to " + fmt("%.2f mm", toMm(da.h_m)) + " (target " +
-                        fmt("%.2f mm", toMm(harm->target_m)) + ").");
+      r.notes.push_back(Message(msg::kMoveAftBottle, {gText(std::abs(da.aft_shift_kg)),
+                                                      side(da.aft_shift_kg, "lower to the upper", "upper to the lower"),
+                                                      fmt("%.2f mm", toMm(da.h_after_swap_m)), fmt("%.2f mm", toMm(da.h_m)),
+                                                      fmt("%.2f mm", toMm(harm->target_m))}));
     }
     if (!da.reaches_target) {
-      r.warnings.push_back("the h-arm target " + fmt("%.2f mm", toMm(harm->target_m)) +
-                           " is not reachable with the disk weights and aft bottles; best is " +
-                           fmt("%.2f mm", toMm(da.h_m)) + " (arrangement " + std::to_string(da.number) + ")");
+      r.warnings.push_back(Message(msg::kHArmUnreachable, {fmt("%.2f mm", toMm(harm->target_m)),
+                                                           fmt("%.2f mm", toMm(da.h_m)), std::to_string(da.number)}));
     }
   }
 
   if (r.predicted.net_buoyancy_kg < v.spec.net_buoyancy_min_kg - 1e-9) {
-    r.warnings.push_back("predicted net buoyancy " + fmt("%+.1f g", toG(r.predicted.net_buoyancy_kg)) +
-                         " is below the profile's band: the glider would end HEAVY");
+    r.warnings.push_back(Message(msg::kEndsHeavy, {fmt("%+.1f g", toG(r.predicted.net_buoyancy_kg))}));
   } else if (r.predicted.net_buoyancy_kg > v.spec.net_buoyancy_max_kg + 1e-9) {
-    r.warnings.push_back("predicted net buoyancy " + fmt("%+.1f g", toG(r.predicted.net_buoyancy_kg)) +
-                         " is above the profile's band");
+    r.warnings.push_back(Message(msg::kAboveBand, {fmt("%+.1f g", toG(r.predicted.net_buoyancy_kg))}));
   }
   if (std::abs(r.predicted.pitch_deg) > v.spec.pitch_tolerance_deg) {
-    r.warnings.push_back("predicted pitch " + fmt("%+.2f deg", r.predicted.pitch_deg) + " is outside +-" +
-                         fmt("%.2f deg", v.spec.pitch_tolerance_deg));
+    r.warnings.push_back(
+        Message(msg::kPitchOutside, {fmt("%+.2f deg", r.predicted.pitch_deg), fmt("%.2f deg", v.spec.pitch_tolerance_deg)}));
   }
   if (std::abs(r.predicted.roll_deg) > v.spec.roll_tolerance_deg) {
-    r.warnings.push_back("predicted roll " + fmt("%+.2f deg", r.predicted.roll_deg) + " is outside +-" +
-                         fmt("%.2f deg", v.spec.roll_tolerance_deg));
+    r.warnings.push_back(
+        Message(msg::kRollOutside, {fmt("%+.2f deg", r.predicted.roll_deg), fmt("%.2f deg", v.spec.roll_tolerance_deg)}));
   }
 
   // --- Slocum specifics ---

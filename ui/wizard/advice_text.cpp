@@ -62,6 +62,25 @@ constexpr Advice kAdvice[] = {
   {"ballast.half_way", QT_TRANSLATE_NOOP("Advice", "Half-way policy: this move aims at about half of the needed change (net buoyancy %1 to %2, pitch %3, roll %4); check the vehicle again and repeat.")},
   // First mission (core/firstmission/first_mission_messages.h).
   {"first_mission.capsize", QT_TRANSLATE_NOOP("Advice", "The CG is not below the CB with the BG of the vehicle profile: the vehicle would capsize. Check BG in the vehicle profile.")},
+  {"first_mission.tank_displaces", QT_TRANSLATE_NOOP("Advice", "In the tank (%1, %2) the glider displaces %3 (%4); at %5 the hull measures %6 and is neutral at %7 in %8 water.")},
+  {"first_mission.weighs_light", QT_TRANSLATE_NOOP("Advice", "It weighs %1, so it is %2 light: the bottles change by %3 (rounded down to whole grams so it never ends heavy).")},
+  {"first_mission.weighs_heavy", QT_TRANSLATE_NOOP("Advice", "It weighs %1, so it is %2 heavy: the bottles change by %3 (rounded down to whole grams so it never ends heavy).")},
+  {"first_mission.bow_bottles", QT_TRANSLATE_NOOP("Advice", "Bow bottles: %1 in %2 and %3 in %4 (%5), so the bow scale would read %6 and the glider floats level.")},
+  {"first_mission.aft_bottles", QT_TRANSLATE_NOOP("Advice", "Aft bottles: %1 in %2 and %3 in %4 (%5), so the aft scale would read %6 and the glider floats level.")},
+  {"first_mission.no_roll_test", QT_TRANSLATE_NOOP("Advice", "No roll test recorded: set the bottles, hang the glider for the roll test (report 4.2) and enter it on the roll-test page; until then the CG height is the profile's BG.")},
+  {"first_mission.roll_test", QT_TRANSLATE_NOOP("Advice", "Roll test: h = %1 from %2 hung masses, so G sits %3 to %4 of B and %5 below it.")},
+  {"first_mission.move_rail", QT_TRANSLATE_NOOP("Advice", "Move %1 of rail weight from the %2 wing rail: the battery alone cannot reach the roll.")},
+  {"first_mission.move_bow_bottle", QT_TRANSLATE_NOOP("Advice", "Move %1 of lead from the %2 bow bottle: the battery cannot reach the roll.")},
+  {"first_mission.move_bow_bottle_rails", QT_TRANSLATE_NOOP("Advice", "Move %1 of lead from the %2 bow bottle: the battery and wing rails cannot reach the roll.")},
+  {"first_mission.roll_battery", QT_TRANSLATE_NOOP("Advice", "Set the roll battery to %1 (%2, toward %3; now %4) to bring G straight below B.")},
+  {"first_mission.roll_remains", QT_TRANSLATE_NOOP("Advice", "The battery, wing rails and bow bottles together cannot cancel the roll: %1 remains. Move other masses sideways.")},
+  {"first_mission.swap_disks", QT_TRANSLATE_NOOP("Advice", "Swap disk column %1 (%2 top, %3 bottom), which %4 G by %5.")},
+  {"first_mission.move_aft_bottle", QT_TRANSLATE_NOOP("Advice", "Move %1 of lead from the %2 aft bottle, so h goes from %3 to %4 (target %5).")},
+  {"first_mission.h_arm_unreachable", QT_TRANSLATE_NOOP("Advice", "The h-arm target %1 cannot be reached with the disk weights and aft bottles; best is %2 (arrangement %3).")},
+  {"first_mission.ends_heavy", QT_TRANSLATE_NOOP("Advice", "The predicted net buoyancy %1 is below the profile's band: the glider would end HEAVY.")},
+  {"first_mission.above_band", QT_TRANSLATE_NOOP("Advice", "The predicted net buoyancy %1 is above the profile's band.")},
+  {"first_mission.pitch_outside", QT_TRANSLATE_NOOP("Advice", "The predicted pitch %1 is outside ±%2.")},
+  {"first_mission.roll_outside", QT_TRANSLATE_NOOP("Advice", "The predicted roll %1 is outside ±%2.")},
   {"ballast.thesis_heavy", QT_TRANSLATE_NOOP("Advice", "The thesis mapping leaves the vehicle %1 heavy.")},
   // Pre-mission plan (core/planning/planning_messages.h).
   {"plan.no_change", QT_TRANSLATE_NOOP("Advice", "No change: the vehicle is already as good as the kit allows.")},
@@ -123,6 +142,11 @@ constexpr Advice kAdvice[] = {
   QT_TRANSLATE_NOOP("AdviceWord", "surfaces"), QT_TRANSLATE_NOOP("AdviceWord", "dives"),
   QT_TRANSLATE_NOOP("AdviceWord", "climbs"), QT_TRANSLATE_NOOP("AdviceWord", "levels"),
   QT_TRANSLATE_NOOP("AdviceWord", "turns"),
+  // First mission, Slocum (core/firstmission/slocum_first_mission.cpp).
+  QT_TRANSLATE_NOOP("AdviceWord", "starboard"), QT_TRANSLATE_NOOP("AdviceWord", "port"),
+  QT_TRANSLATE_NOOP("AdviceWord", "port to the starboard"), QT_TRANSLATE_NOOP("AdviceWord", "starboard to the port"),
+  QT_TRANSLATE_NOOP("AdviceWord", "lower to the upper"), QT_TRANSLATE_NOOP("AdviceWord", "upper to the lower"),
+  QT_TRANSLATE_NOOP("AdviceWord", "lowers"), QT_TRANSLATE_NOOP("AdviceWord", "raises"),
 };
 // clang-format on
 
