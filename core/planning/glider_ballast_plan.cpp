@@ -6,6 +6,7 @@
 
 #include "common/input_error.h"
 #include "common/units.h"
+#include "planning/glider_plan_messages.h"
 #include "seawater/seawater.h"
 #include "vehicle/json_reader.h"
 #include "weighing/slocum_layout.h"
@@ -14,6 +15,8 @@
 namespace auv {
 
 namespace {
+
+namespace msg = planning::msg;
 
 constexpr double kLeadDensity_kgm3 = 11296.0;  // basestation's lead, 11.296 g/cm3
 
@@ -65,9 +68,7 @@ void slocumPlan(const VehicleProfile& v, const GliderPlanInput& in, double add_k
     // Unknown contents: half-full bottles and rails, so that both adding and
     // removing are possible; the capacity check is then only indicative.
     for (int k = 0; k < kSlocumItemCount; ++k) now.at(static_cast<SlocumItem>(k)) = 0.5 * L.item(static_cast<SlocumItem>(k)).capacity_kg;
-    out["warnings"].push_back(
-        "bottle contents not given: capacities checked against half-full bottles (give what is in the bottles to "
-        "check them)");
+    msg::addPlanLine(out, "warnings", Message(msg::kContentsUnknown));
   }
   const double xb = L.item(kForePort).position_m.x(), xa = L.item(kAftUpper).position_m.x();
   // Pitch moment the trim asks for: the battery sits at battery_for_level
@@ -85,8 +86,7 @@ void slocumPlan(const VehicleProfile& v, const GliderPlanInput& in, double add_k
                          {"pitch_battery_mass_kg", batt_kg},
                          {"moment_to_bottles_kg_m", moment_kgm}};
   } else {
-    out["cannot_tell"].push_back("the pitch trim (the log has no battery_position, or too little variation): the bottle "
-                                 "split is Baird's level split only");
+    msg::addPlanLine(out, "cannot_tell", Message(msg::kNoPitchTrim));
   }
   TankBuoyancy tb;
   tb.mass_change_kg = add_kg;
@@ -108,8 +108,7 @@ void slocumPlan(const VehicleProfile& v, const GliderPlanInput& in, double add_k
     const double maxMove = rail_kg > 0 ? std::min(st.after.at(kRailStarboard), L.item(kRailPort).capacity_kg - st.after.at(kRailPort))
                                        : std::min(st.after.at(kRailPort), L.item(kRailStarboard).capacity_kg - st.after.at(kRailStarboard));
     if (std::abs(rail_kg) > maxMove + 1e-12) {
-      out["warnings"].push_back("the wing rails cannot take the whole roll correction (" + fmt("%.0f", 1000 * std::abs(rail_kg)) +
-                                " g); move the roll battery or a disk weight for the rest");
+      msg::addPlanLine(out, "warnings", Message(msg::kRailsShort, {fmt("%.0f", 1000 * std::abs(rail_kg))}));
       rail_kg = std::copysign(maxMove, rail_kg);
     }
     st.after.at(kRailStarboard) -= rail_kg;
@@ -117,7 +116,7 @@ void slocumPlan(const VehicleProfile& v, const GliderPlanInput& in, double add_k
     out["roll_trim"] = {{"roll_deg", r->get<double>()}, {"bg_mm", units::mToMm(bg)}, {"rail_transfer_g", 1000 * rail_kg},
                         {"direction", rail_kg >= 0 ? "starboard rail -> port rail" : "port rail -> starboard rail"}};
   } else {
-    out["cannot_tell"].push_back("roll (the log has no roll in glides)");
+    msg::addPlanLine(out, "cannot_tell", Message(msg::kNoRoll));
   }
   nlohmann::json pts = nlohmann::json::array();
   for (int k = 0; k < kSlocumItemCount; ++k) {
@@ -134,7 +133,7 @@ void slocumPlan(const VehicleProfile& v, const GliderPlanInput& in, double add_k
   out["aft_change_g"] = std::round(1000 * st.aft_change_kg);
   out["total_change_g"] = std::round(1000 * st.total_change_kg);
   out["resolution_g"] = 1000 * L.mass_resolution_kg;
-  for (const auto& w : st.warnings) out["warnings"].push_back(w);
+  for (const auto& w : st.warnings) msg::addPlanLine(out, "warnings", Message(w));
 }
 
 void seagliderPlan(const VehicleProfile& v, const GliderPlanInput& in, double add_kg, double rho_t, nlohmann::json& out) {
@@ -182,7 +181,7 @@ void seagliderPlan(const VehicleProfile& v, const GliderPlanInput& in, double ad
     out["seaglider"]["C_PITCH_new"] = std::round(newPitch);
     out["seaglider"]["pitch_mass_for_level_mm"] = b;
   } else {
-    out["cannot_tell"].push_back("C_PITCH (the log has no pitch-mass position with enough variation)");
+    msg::addPlanLine(out, "cannot_tell", Message(msg::kNoCPitch));
   }
   out["points"] = nlohmann::json::array();
   if (lead_g != 0.0) out["points"].push_back({{"name", "lead"}, {"label", "Lead ballast"}, {"add_g", lead_g}});
@@ -206,8 +205,7 @@ std::optional<double> massToAddAtTargetKg(const nlohmann::json& r, const analysi
 
 nlohmann::json planGliderBallast(const VehicleProfile& v, const GliderPlanInput& in) {
   nlohmann::json out;
-  out["warnings"] = nlohmann::json::array();
-  out["cannot_tell"] = nlohmann::json::array();
+  for (const char* list : {"warnings", "warnings_ids", "cannot_tell", "cannot_tell_ids"}) out[list] = nlohmann::json::array();
   double add_kg = 0.0, sigma_kg = 0.0;
   nlohmann::json target = in.report.value("target", nlohmann::json());
   if (in.target) {
@@ -240,9 +238,8 @@ nlohmann::json planGliderBallast(const VehicleProfile& v, const GliderPlanInput&
     const Trim t = trimOf(in.report);
     if (t.known) out["linear_battery_for_level_mm"] = -t.T3 / t.T2;
     out["points"] = nlohmann::json::array();
-    out["cannot_tell"].push_back("where the grams go: the log carries no ballast-place geometry; add " +
-                                 fmt("%+.0f", 1000 * add_kg) + " g at the vehicle's ballast places so that it stays level");
-    out["cannot_tell"].push_back("the ballast (pump) zero offset in the vendor's setting: only the mass change is known");
+    msg::addPlanLine(out, "cannot_tell", Message(msg::kNoGeometry, {fmt("%+.0f", 1000 * add_kg)}));
+    msg::addPlanLine(out, "cannot_tell", Message(msg::kNoZeroOffset));
   }
   return out;
 }

@@ -298,226 +298,261 @@
         <translation>Forventet rull %1 er utenfor ±%2.</translation>
     </message>
     <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="85" />
+        <source>What is in the bottles was not given: their capacities are checked against half-full bottles. Enter what is installed to check them.</source>
+        <translation>Innholdet i flaskene ble ikke oppgitt: kapasitetene kontrolleres mot halvfulle flasker. Før inn hva som er montert for å kontrollere dem.</translation>
+    </message>
+    <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="86" />
+        <source>The wing rails cannot take the whole roll correction (%1 g); move the roll battery or a disk weight for the rest.</source>
+        <translation>Vingeskinnene kan ikke ta hele rullkorreksjonen (%1 g); flytt rullbatteriet eller en skivevekt for resten.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="87" />
+        <source>the pitch trim (the log has no battery position, or it varies too little): the bottle split is Baird's level split only</source>
+        <translation>stamptrimmen (loggen har ingen batteriposisjon, eller den varierer for lite): fordelingen på flaskene er bare Bairds plane fordeling</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="88" />
+        <source>the roll (the log has no roll in glides)</source>
+        <translation>rullen (loggen har ingen rull under gliding)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="89" />
+        <source>C_PITCH (the log has no pitch-mass position with enough variation)</source>
+        <translation>C_PITCH (loggen har ingen posisjon for stampmassen med nok variasjon)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="90" />
+        <source>where the grams go: the log carries no geometry of the ballast places; add %1 g at the vehicle's ballast places so that it stays level</source>
+        <translation>hvor grammene skal: loggen har ingen geometri for ballaststedene; legg %1 g på fartøyets ballaststeder slik at det holder seg plant</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="91" />
+        <source>the ballast (pump) zero offset in the vendor's setting: only the mass change is known</source>
+        <translation>ballastens (pumpens) nullpunktsforskyvning i produsentens innstilling: bare masseendringen er kjent</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="94" />
         <source>No change: the vehicle is already as good as the kit allows.</source>
         <translation>Ingen endring: fartøyet er allerede så godt som vektsettet tillater.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="87" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="95" />
         <source>Next mission at %1: from net buoyancy %2, pitch %3, roll %4 to %5 ± %6, pitch %7 ± %8, roll %9 ± %10 (1 σ).</source>
         <translation>Neste oppdrag ved %1: fra netto oppdrift %2, stamp %3, rull %4 til %5 ± %6, stamp %7 ± %8, rull %9 ± %10 (1 σ).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="88" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="96" />
         <source>Mass %1 from the last mission: %2 displaced at %3, %4, %5 minus the measured net buoyancy %6.</source>
         <translation>Masse %1 fra forrige oppdrag: %2 fortrengt ved %3, %4, %5 minus målt netto oppdrift %6.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="89" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="97" />
         <source>Safety margin %1 = %2 × σ %3 (estimate and water): the change keeps at least that much net buoyancy at every planned point.</source>
         <translation>Sikkerhetsmargin %1 = %2 × σ %3 (estimat og vann): endringen beholder minst så mye netto oppdrift i hvert planlagte punkt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="90" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="98" />
         <source>CG x was not identified from the log: the plan assumes it at the CB and keeps the fore-aft balance. Check pitch on the next mission.</source>
         <translation>Tyngdepunkt x ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder balansen forut-akter. Kontroller stampen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="91" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="99" />
         <source>CG y was not identified from the log: the plan assumes it at the CB and keeps the side balance. Check roll on the next mission.</source>
         <translation>Tyngdepunkt y ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder sidebalansen. Kontroller rullen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="92" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="100" />
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="93" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="101" />
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4: it would sink if it lost power there.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4: det ville synke om det mistet strømmen der.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="94" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="102" />
         <source>Net buoyancy %1 at the operating depth is above the band (%2) because the safety margin (%3) and the less buoyant planned points (%4 less) come first.</source>
         <translation>Netto oppdrift %1 på operasjonsdybden er over båndet (%2) fordi sikkerhetsmarginen (%3) og de planlagte punktene med mindre oppdrift (%4 mindre) går foran.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="95" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="103" />
         <source>The net buoyancy band cannot be reached with this kit while keeping the safety margin: no combination of pieces lands between %1 and %2; the nearest safe one is %3.</source>
         <translation>Båndet for netto oppdrift kan ikke nås med dette vektsettet uten å gi opp sikkerhetsmarginen: ingen kombinasjon av lodd lander mellom %1 og %2; den nærmeste sikre er %3.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="96" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="104" />
         <source>The kit has optional pieces (%1) not used in this plan; allowing them may reach the missed band.</source>
         <translation>Vektsettet har valgfrie lodd (%1) som ikke er brukt i denne planen; tillater du dem, kan båndet som ble bommet på kanskje nås.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="97" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="105" />
         <source>The estimate's own uncertainty (pitch %1, roll %2) is wider than a tolerance band; the next mission will tell.</source>
         <translation>Estimatets egen usikkerhet (stamp %1, rull %2) er bredere enn et toleransebånd; neste oppdrag vil vise det.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="98" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="106" />
         <source>Classic table (thesis App. E): %1, pitch error %2, roll error %3; it moves one %4 piece per point and mission, whatever the size of the error.</source>
         <translation>Klassisk tabell (oppgavens vedlegg E): %1, stampavvik %2, rullavvik %3; den flytter ett lodd på %4 per punkt og oppdrag, uansett hvor stort avviket er.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="99" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="107" />
         <source>The classic table asks to remove a piece where none is installed, so it changes nothing.</source>
         <translation>Den klassiske tabellen ber om å fjerne et lodd der ingen er montert, så den endrer ingenting.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="100" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="108" />
         <source>The classic table uses the standard kit only.</source>
         <translation>Den klassiske tabellen bruker bare standard vektsett.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="101" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="109" />
         <source>The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short legs at different speeds); it would bring the uncertainty to about %4 kg.</source>
         <translation>Usikkerheten i netto oppdrift (%1 kg) er for stor for båndet på %2 kg: legg kalibreringsmanøveren til neste oppdrag (%3 korte etapper i ulike hastigheter); den ville bringe usikkerheten ned til omtrent %4 kg.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="102" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="110" />
         <source>Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).</source>
         <translation>Rull er planlagt og forutsagt i marsjfart (%1 o/min, propellmoment inkludert): sidebalansen som holder fartøyet på rett kjøl der, slik oppgaven bedømmer rull (§5.3.3).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="104" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="112" />
         <source>%1 is a constant %2 %3 everywhere (all phases, depths and speeds)</source>
         <translation>%1 er konstant %2 %3 overalt (alle faser, dybder og hastigheter)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="105" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="113" />
         <source>%1 grows %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="106" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="114" />
         <source>%1 shrinks %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="107" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="115" />
         <source>%1 grows %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="108" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="116" />
         <source>%1 shrinks %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="109" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="117" />
         <source>%1 concentrates at %2 %3 (mean %4 %5 against %6 overall)</source>
         <translation>%1 samler seg ved %2 %3 (middel %4 %5 mot %6 totalt)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="110" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="118" />
         <source>%1: no factor of the log explains it</source>
         <translation>%1: ingen faktor i loggen forklarer det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="111" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="119" />
         <source>AUV rigid-body model of the simulator (Fossen form) on smoothed logged states; simulation: replay of the logged commands through the model's autopilot; ballast state: net buoyancy and CG x/y</source>
         <translation>AUV-stivlegememodellen fra simulatoren (Fossen-form) på glattede loggede tilstander; simulering: de loggede kommandoene spilt av gjennom modellens autopilot; ballasttilstand: netto oppdrift og CG x/y</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="112" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="120" />
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state and Cd0</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand og Cd0</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="113" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="121" />
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state, Cd0 and the lift slope</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand, Cd0 og løftestigningstallet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="208" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="216" />
         <source>bringing the CG back towards the CB fore-aft</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="209" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="217" />
         <source>balanced by the other points' fore-aft shares</source>
         <translation>balansert av de andre punktenes andeler forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="210" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="218" />
         <source>bringing the CG back towards the CB sideways</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="211" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="219" />
         <source>balanced by the other points' sideways shares</source>
         <translation>balansert av de andre punktenes andeler sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="272" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="280" />
         <source>%1: %2 (%3; %4 → %5 of %6).</source>
         <translation>%1: %2 (%3; %4 → %5 av %6).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="281" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="289" />
         <source>%1 is largest during %2: mean %3 %4</source>
         <translation>%1 er størst under %2: middel %3 %4</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="296" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="304" />
         <source>; independent of %1</source>
         <translation>; uavhengig av %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="191" />
-        <location filename="../../ui/wizard/advice_text.cpp" line="259" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="199" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="267" />
         <source> and </source>
         <translation> og </translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="195" />
-        <location filename="../../ui/wizard/advice_text.cpp" line="267" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="203" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="275" />
         <source>remove %1, then add %2</source>
         <translation>fjern %1, legg så til %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="197" />
-        <location filename="../../ui/wizard/advice_text.cpp" line="269" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="205" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="277" />
         <source>remove %1</source>
         <translation>fjern %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="199" />
-        <location filename="../../ui/wizard/advice_text.cpp" line="271" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="207" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="279" />
         <source>add %1</source>
         <translation>legg til %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="201" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="209" />
         <source>%1 mm forward</source>
         <translation>%1 mm forover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="202" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="210" />
         <source>%1 mm aft</source>
         <translation>%1 mm akterover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="204" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="212" />
         <source>%1 mm to starboard</source>
         <translation>%1 mm mot styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="205" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="213" />
         <source>%1 mm to port</source>
         <translation>%1 mm mot babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="214" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="222" />
         <source>%1: %2 (%3), which lowers the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som senker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="215" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="223" />
         <source>%1: %2 (%3), which raises the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som øker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
@@ -537,57 +572,57 @@
         <translation>Tyngdepunktet er ikke under oppdriftssenteret etter endringen: fartøyet ville kantre. Kontroller BG og nyttelasten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="84" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="92" />
         <source>The thesis mapping leaves the vehicle %1 heavy.</source>
         <translation>Oppgavens fordeling gjør fartøyet %1 for tungt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="227" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="235" />
         <source>The net buoyancy band %1 to %2 cannot be reached with this kit; best %3</source>
         <translation>Båndet for netto oppdrift %1 til %2 kan ikke nås med dette vektsettet; beste er %3</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="229" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="237" />
         <source>The pitch band ±%1 cannot be reached with this kit (at rest); best %2</source>
         <translation>Stampbåndet ±%1 kan ikke nås med dette vektsettet (i ro); beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="231" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="239" />
         <source>The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet mens stampen holdes i båndet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="233" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="241" />
         <source>The roll band ±%1 cannot be reached with this kit; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="235" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="243" />
         <source>; flying level at %1 m/s it pitches %2°, inside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, innenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="236" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="244" />
         <source>; flying level at %1 m/s it pitches %2°, outside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, utenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="239" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="247" />
         <source>; out of reach whatever the piece sizes: the points' capacities, the installed pieces and the higher priorities limit it</source>
         <translation>; utenfor rekkevidde uansett loddstørrelser: punktenes kapasitet, loddene som er montert og de høyere prioritetene begrenser det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="242" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="250" />
         <source>; a %1 piece would reach it</source>
         <translation>; et lodd på %1 ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="244" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="252" />
         <source>; no single extra piece size tried (%1) would reach it</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="246" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="254" />
         <source>; no single extra piece size tried (%1) would reach it (some were not searched to the end)</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det (noen ble ikke søkt helt ut)</translation>
     </message>
@@ -595,262 +630,262 @@
 <context>
     <name>AdviceWord</name>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="118" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="126" />
         <source>operating</source>
         <translation>operasjonsdybden</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="118" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="126" />
         <source>deepest</source>
         <translation>største dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="119" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="127" />
         <source>surface</source>
         <translation>overflaten</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="119" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="127" />
         <source>transit</source>
         <translation>transitt</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="120" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="128" />
         <source>none</source>
         <translation>ingen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="122" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="130" />
         <source>depth command steps</source>
         <translation>trinn i dybdekommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="122" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="130" />
         <source>pitch command steps</source>
         <translation>trinn i stampkommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="123" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="131" />
         <source>speed changes</source>
         <translation>fartsendringer</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="123" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="131" />
         <source>propeller speed changes</source>
         <translation>endringer i propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="126" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="134" />
         <source>vertical-velocity error</source>
         <translation>avvik i vertikal hastighet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="126" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="134" />
         <source>vertical-force error</source>
         <translation>avvik i vertikal kraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="127" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="135" />
         <source>pitch-moment error</source>
         <translation>avvik i stampmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="127" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="135" />
         <source>roll-moment error</source>
         <translation>avvik i rullmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="128" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="136" />
         <source>depth error</source>
         <translation>dybdeavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="128" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="136" />
         <source>pitch error</source>
         <translation>stampavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="129" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="137" />
         <source>roll error</source>
         <translation>rullavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="129" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="137" />
         <source>speed error</source>
         <translation>fartsavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="130" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="138" />
         <source>surge-force error</source>
         <translation>avvik i langskipskraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="130" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="138" />
         <source>error</source>
         <translation>avvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="131" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="139" />
         <source>pressure</source>
         <translation>trykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="131" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="139" />
         <source>temperature</source>
         <translation>temperatur</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="132" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="140" />
         <source>time</source>
         <translation>tid</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="132" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="140" />
         <source>speed</source>
         <translation>fart</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="133" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="141" />
         <source>propeller speed</source>
         <translation>propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="133" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="141" />
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="134" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="142" />
         <source>time since an actuator change</source>
         <translation>tid siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="134" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="142" />
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="135" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="143" />
         <source>100 dbar</source>
         <translation>100 dbar</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="135" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="143" />
         <source>degC</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="136" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="144" />
         <source>hour</source>
         <translation>time</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="136" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="144" />
         <source>0.1 m/s</source>
         <translation>0,1 m/s</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="137" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="145" />
         <source>100 rpm</source>
         <translation>100 o/min</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="137" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="145" />
         <source>10 deg of pitch</source>
         <translation>10° stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="138" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="146" />
         <source>10 s since an actuator change</source>
         <translation>10 s siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="139" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="147" />
         <source>below</source>
         <translation>under</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="139" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="147" />
         <source>above</source>
         <translation>over</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="140" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="148" />
         <source>after</source>
         <translation>etter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="140" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="148" />
         <source>before</source>
         <translation>før</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="141" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="149" />
         <source>within</source>
         <translation>innenfor</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="142" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="150" />
         <source>surfaces</source>
         <translation>overflateopphold</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="142" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="150" />
         <source>dives</source>
         <translation>dykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="143" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="151" />
         <source>climbs</source>
         <translation>stigninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="143" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="151" />
         <source>levels</source>
         <translation>planflyvninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="144" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="152" />
         <source>turns</source>
         <translation>svinger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="146" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="154" />
         <source>starboard</source>
         <translation>styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="146" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="154" />
         <source>port</source>
         <translation>babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="147" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="155" />
         <source>port to the starboard</source>
         <translation>babord til styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="147" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="155" />
         <source>starboard to the port</source>
         <translation>styrbord til babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="148" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="156" />
         <source>lower to the upper</source>
         <translation>nedre til øvre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="148" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="156" />
         <source>upper to the lower</source>
         <translation>øvre til nedre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="149" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="157" />
         <source>lowers</source>
         <translation>senker</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="149" />
+        <location filename="../../ui/wizard/advice_text.cpp" line="157" />
         <source>raises</source>
         <translation>hever</translation>
     </message>
@@ -2405,164 +2440,164 @@
 <context>
     <name>auv::ui::GliderInstructions</name>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="25" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="43" />
         <source>%1: add %2 g of lead shot (holds at most %3 g).</source>
         <translation>%1: legg i %2 g blyhagl (rommer høyst %3 g).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="26" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="44" />
         <source>%1: take out %2 g of lead shot (holds at most %3 g).</source>
         <translation>%1: ta ut %2 g blyhagl (rommer høyst %3 g).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="31" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="49" />
         <source>Bow bottles %1 g, aft bottles %2 g: %3 g in all, in %4 g steps.</source>
         <translation>Baugflasker %1 g, akterflasker %2 g: %3 g i alt, i trinn på %4 g.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="38" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="56" />
         <source>Roll %1° at zero roll command: no wing-rail change.</source>
         <translation>Rull %1° ved null rullkommando: ingen endring på vingeskinnene.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="39" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="57" />
         <source>Roll %1° at zero roll command: move %2 g from the %3 (included above).</source>
         <translation>Rull %1° ved null rullkommando: flytt %2 g fra %3 (med ovenfor).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="43" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="61" />
         <source>starboard wing rail to the port wing rail</source>
         <translation>styrbord vingeskinne til babord vingeskinne</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="44" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="62" />
         <source>port wing rail to the starboard wing rail</source>
         <translation>babord vingeskinne til styrbord vingeskinne</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="48" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="66" />
         <source>Pitch: level flight at pump zero needs the battery at %1 mm (centre of travel %2 mm); the bow/aft split above brings it back to the centre.</source>
         <translation>Stamp: plan flukt med pumpen på null krever batteriet på %1 mm (midt i vandringen %2 mm); fordelingen baug/akter ovenfor bringer det tilbake til midten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="58" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="76" />
         <source>Lead: no change (the VBD takes it).</source>
         <translation>Bly: ingen endring (VBD-en tar det).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="59" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="77" />
         <source>Lead: add %1 g (%2 cm³ of lead).</source>
         <translation>Bly: legg til %1 g (%2 cm³ bly).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="60" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="78" />
         <source>Lead: take off %1 g (%2 cm³ of lead).</source>
         <translation>Bly: ta av %1 g (%2 cm³ bly).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="61" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="79" />
         <source>Set $C_VBD from %1 to %2 (VBD %3 cm³).</source>
         <translation>Sett $C_VBD fra %1 til %2 (VBD %3 cm³).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="69" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="87" />
         <source>Set $C_PITCH from %1 to %2 (pitch mass for level flight at %3 mm).</source>
         <translation>Sett $C_PITCH fra %1 til %2 (stampmasse for plan flukt på %3 mm).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="76" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="94" />
         <source>Keep $C_PITCH at %1: the log's pitch trim gives %2, outside PITCH_MIN .. PITCH_MAX (%3 .. %4); check the pitch trim on a test dive.</source>
         <translation>Behold $C_PITCH på %1: loggens stamptrim gir %2, utenfor PITCH_MIN .. PITCH_MAX (%3 .. %4); sjekk stamptrimmen på et prøvedykk.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="84" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="102" />
         <source>Basis: %1.</source>
         <translation>Grunnlag: %1.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="94" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="112" />
         <source>%1 ± %2 g</source>
         <translation>%1 ± %2 g</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="94" />
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="139" />
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="140" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="112" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="157" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="158" />
         <source>%1 g</source>
         <translation>%1 g</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="95" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="113" />
         <source>Mass to add %1 for neutral with the pump at zero in %2 kg/m³ water at %3 dbar, %4 °C.</source>
         <translation>Masse å legge til %1 for nøytral med pumpen på null i vann på %2 kg/m³ ved %3 dbar, %4 °C.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="100" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="118" />
         <source>Target water: %1.</source>
         <translation>Målvann: %1.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="107" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="125" />
         <source>Change the glider's mass by %1 g at its ballast places so that it stays level.</source>
         <translation>Endre gliderens masse med %1 g på ballaststedene slik at den holder seg plan.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="109" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="127" />
         <source>Linear battery for level flight at pump zero: %1 mm.</source>
         <translation>Lineært batteri for plan flukt med pumpen på null: %1 mm.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="126" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="144" />
         <source>From the log: %1</source>
         <translation>Fra loggen: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="130" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="148" />
         <source>Place</source>
         <translation>Sted</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="130" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="148" />
         <source>Change</source>
         <translation>Endring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="130" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="148" />
         <source>Pieces</source>
         <translation>Stykker</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="130" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="148" />
         <source>Holds at most</source>
         <translation>Rommer høyst</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="130" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="148" />
         <source>Note</source>
         <translation>Merknad</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="137" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="155" />
         <source>%1 × 1 g lead shot</source>
         <translation>%1 × 1 g blyhagl</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="138" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="156" />
         <source>%1 g lead</source>
         <translation>%1 g bly</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="143" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="161" />
         <source>Neutral with the pump at zero in the water above, within ± %1 g (1 σ).</source>
         <translation>Nøytral med pumpen på null i vannet ovenfor, innenfor ± %1 g (1 σ).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="144" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="162" />
         <source>Neutral with the pump at zero in the water above.</source>
         <translation>Nøytral med pumpen på null i vannet ovenfor.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="146" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="164" />
         <source>Cannot tell: %1</source>
         <translation>Kan ikke si: %1</translation>
     </message>
@@ -4772,25 +4807,25 @@
     </message>
     <message>
         <location filename="../../ui/wizard/work_order.cpp" line="138" />
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="123" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="141" />
         <source>Ballast work order</source>
         <translation>Arbeidsordre for ballast</translation>
     </message>
     <message>
         <location filename="../../ui/wizard/work_order.cpp" line="49" />
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="124" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="142" />
         <source>Vehicle: %1 (%2)</source>
         <translation>Fartøy: %1 (%2)</translation>
     </message>
     <message>
         <location filename="../../ui/wizard/work_order.cpp" line="50" />
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="124" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="142" />
         <source>Configuration: %1</source>
         <translation>Konfigurasjon: %1</translation>
     </message>
     <message>
         <location filename="../../ui/wizard/work_order.cpp" line="51" />
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="125" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="143" />
         <source>Date: %1</source>
         <translation>Dato: %1</translation>
     </message>
@@ -4926,7 +4961,7 @@
     </message>
     <message>
         <location filename="../../ui/wizard/work_order.cpp" line="62" />
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="130" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="148" />
         <source>Done</source>
         <translation>Gjort</translation>
     </message>
@@ -4973,13 +5008,13 @@
     <message>
         <location filename="../../ui/wizard/work_order.cpp" line="127" />
         <location filename="../../ui/wizard/work_order.cpp" line="199" />
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="172" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="190" />
         <source>Done by: ______________________   Signature: ______________________   Date: ____________</source>
         <translation>Utført av: ______________________   Signatur: ______________________   Dato: ____________</translation>
     </message>
     <message>
         <location filename="../../ui/wizard/work_order.cpp" line="140" />
-        <location filename="../../ui/wizard/glider_work_order.cpp" line="127" />
+        <location filename="../../ui/wizard/glider_work_order.cpp" line="145" />
         <source>Next mission's water</source>
         <translation>Vannet i neste oppdrag</translation>
     </message>

@@ -81,6 +81,14 @@ constexpr Advice kAdvice[] = {
   {"first_mission.above_band", QT_TRANSLATE_NOOP("Advice", "The predicted net buoyancy %1 is above the profile's band.")},
   {"first_mission.pitch_outside", QT_TRANSLATE_NOOP("Advice", "The predicted pitch %1 is outside ±%2.")},
   {"first_mission.roll_outside", QT_TRANSLATE_NOOP("Advice", "The predicted roll %1 is outside ±%2.")},
+  // Glider plan (core/planning/glider_plan_messages.h).
+  {"glider_plan.contents_unknown", QT_TRANSLATE_NOOP("Advice", "What is in the bottles was not given: their capacities are checked against half-full bottles. Enter what is installed to check them.")},
+  {"glider_plan.rails_short", QT_TRANSLATE_NOOP("Advice", "The wing rails cannot take the whole roll correction (%1 g); move the roll battery or a disk weight for the rest.")},
+  {"glider_plan.no_pitch_trim", QT_TRANSLATE_NOOP("Advice", "the pitch trim (the log has no battery position, or it varies too little): the bottle split is Baird's level split only")},
+  {"glider_plan.no_roll", QT_TRANSLATE_NOOP("Advice", "the roll (the log has no roll in glides)")},
+  {"glider_plan.no_c_pitch", QT_TRANSLATE_NOOP("Advice", "C_PITCH (the log has no pitch-mass position with enough variation)")},
+  {"glider_plan.no_geometry", QT_TRANSLATE_NOOP("Advice", "where the grams go: the log carries no geometry of the ballast places; add %1 g at the vehicle's ballast places so that it stays level")},
+  {"glider_plan.no_zero_offset", QT_TRANSLATE_NOOP("Advice", "the ballast (pump) zero offset in the vendor's setting: only the mass change is known")},
   {"ballast.thesis_heavy", QT_TRANSLATE_NOOP("Advice", "The thesis mapping leaves the vehicle %1 heavy.")},
   // Pre-mission plan (core/planning/planning_messages.h).
   {"plan.no_change", QT_TRANSLATE_NOOP("Advice", "No change: the vehicle is already as good as the kit allows.")},

@@ -4,6 +4,7 @@
 
 #include "common/input_error.h"
 #include "widgets/inputs.h"
+#include "wizard/advice_text.h"
 
 namespace auv::ui {
 namespace {
@@ -16,6 +17,23 @@ double num(const nlohmann::json& j, const char* k, double fallback = NAN) {
 }
 
 QString g0(double g) { return signedFixed(std::round(g) == 0.0 ? 0.0 : std::round(g), 0); }
+
+// The plan's English lines in the wizard's words: "<list>_ids" holds each
+// line's message id and arguments (core/planning/glider_plan_messages.h).
+QStringList planLines(const nlohmann::json& p, const std::string& list) {
+  const nlohmann::json lines = p.value(list, nlohmann::json::array());
+  const nlohmann::json ids = p.value(list + "_ids", nlohmann::json::array());
+  QStringList out;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string english = lines[i].get<std::string>();
+    if (i < ids.size() && ids[i].is_object() && !ids[i].value("id", std::string()).empty())
+      out << adviceText(Message(ids[i]["id"].get<std::string>(), english,
+                                ids[i].value("args", std::vector<std::string>())));
+    else
+      out << q(english);
+  }
+  return out;
+}
 
 void slocumSteps(const nlohmann::json& p, GliderInstructions& out) {
   for (const auto& pt : p.value("points", nlohmann::json::array())) {
@@ -108,8 +126,8 @@ GliderInstructions gliderInstructions(const nlohmann::json& p, const VehicleProf
     if (p.contains("linear_battery_for_level_mm"))
       out.steps << GliderInstructions::tr("Linear battery for level flight at pump zero: %1 mm.").arg(num(p, "linear_battery_for_level_mm", 0.0), 0, 'f', 1);
   }
-  for (const auto& c : p.value("cannot_tell", nlohmann::json::array())) out.cannot_tell << q(c.get<std::string>());
-  for (const auto& w : p.value("warnings", nlohmann::json::array())) out.warnings << q(w.get<std::string>());
+  out.cannot_tell = planLines(p, "cannot_tell");
+  out.warnings = planLines(p, "warnings");
   return out;
 }
 
