@@ -308,24 +308,16 @@ QString checkSummary(const std::vector<std::string>& a) {
 }  // namespace
 
 QString adviceText(const Message& m) {
-  if (m.id() == "ballast.point") {
-    const QString s = pointText(m.args());
-    if (!s.isEmpty()) return s;
-  }
-  if (m.id() == "check.largest_during") {
-    const QString s = largestDuring(m.args());
-    if (!s.isEmpty()) return s;
-  }
-  if (m.id() == "check.summary") {
-    const QString s = checkSummary(m.args());
-    if (!s.isEmpty()) return s;
-  }
-  if (m.id() == "plan.explain_point") {
-    const QString s = explainPoint(m.args());
-    if (!s.isEmpty()) return s;
-  }
-  if (m.id() == "ballast.band_unreachable") {
-    const QString s = bandUnreachable(m.args());
+  // Sentences core builds in pieces (a variable number of arguments): their
+  // own formatters; an empty result falls back to core's English.
+  using Builder = QString (*)(const std::vector<std::string>&);
+  static const std::pair<const char*, Builder> kBuilt[] = {
+      {"ballast.point", pointText},         {"check.largest_during", largestDuring},
+      {"check.summary", checkSummary},      {"plan.explain_point", explainPoint},
+      {"ballast.band_unreachable", bandUnreachable}};
+  for (const auto& [id, build] : kBuilt) {
+    if (m.id() != id) continue;
+    const QString s = build(m.args());
     if (!s.isEmpty()) return s;
   }
   const auto it = table().find(QString::fromStdString(m.id()));
