@@ -29,6 +29,7 @@
 #include "wizard/demo_state.h"
 #include "wizard/operator_wizard.h"
 #include "wizard/page_renderer.h"
+#include "wizard/point_labels.h"
 #include "wizard/pinned_fonts.h"
 #include "wizard/work_order.h"
 
@@ -155,7 +156,12 @@ TEST_F(WorkOrders, SlocumFirstMissionWorkOrderKeepsEveryStepOnOnePage) {
   ASSERT_FALSE(r.notes.empty());
   QString flat = drawn;
   flat.replace('\n', ' ');
-  for (const auto& n : r.notes) EXPECT_NE(flat.indexOf(QString::fromStdString(n).left(25)), -1) << n;
+  // In the wizard's words, with the points' labels for their ids.
+  for (const auto& n : r.notes) {
+    const QString shown = withPointLabels(adviceText(n), *s.vehicle).left(25);
+    EXPECT_NE(flat.indexOf(shown), -1) << shown.toStdString();
+  }
+  EXPECT_EQ(flat.indexOf("fore_port"), -1) << "point ids on the work order";
   const QImage img = renderWorkOrder(order, 96);
   img.save(QString(AUV_SCREENSHOT_DIR) + "/55_slocum_work_order.png");
   const QString problem = auv::testing::checkGolden(img, "55_slocum_work_order");

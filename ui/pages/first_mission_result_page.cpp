@@ -12,7 +12,6 @@
 #include <QSettings>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QRegularExpression>
 #include <algorithm>
 #include <cmath>
 
@@ -27,6 +26,7 @@
 #include "wizard/advice_text.h"
 #include "wizard/history_save.h"
 #include "wizard/operator_wizard.h"
+#include "wizard/point_labels.h"
 #include "wizard/work_order.h"
 
 namespace auv::ui {
@@ -199,17 +199,7 @@ void FirstMissionResultPage::showReport(const FirstMissionReport& r) {
   QStringList msgs;
   for (const auto& w : r.warnings) msgs << tr("⚠ %1").arg(adviceText(w));
   for (const auto& n : r.notes) msgs << adviceText(n);
-  // Core's advice names points by their profile ids (fore_port); the
-  // technician reads the profile's labels (the longest id first, so that
-  // "fore_port" is not half-replaced inside a longer id).
-  QString text = msgs.join("\n");
-  std::vector<const AdjustmentPoint*> pts;
-  for (const auto& p : state_.vehicle->points) pts.push_back(&p);
-  std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->name.size() > b->name.size(); });
-  for (const auto* p : pts) {
-    const QRegularExpression id("\\b" + QRegularExpression::escape(QString::fromStdString(p->name)) + "\\b");
-    text.replace(id, QString::fromStdString(p->label));
-  }
+  const QString text = withPointLabels(msgs.join("\n"), *state_.vehicle);
   messages_->setText(text);
 }
 

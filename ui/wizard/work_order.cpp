@@ -1,6 +1,7 @@
 #include "wizard/work_order.h"
 
 #include "wizard/advice_text.h"
+#include "wizard/point_labels.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -122,8 +123,8 @@ WorkOrder makeFirstMissionWorkOrder(const WizardState& s, TimePoint now) {
              << WorkOrder::tr("Roll %1° (band ±%2°): %3")
                     .arg(signedFixed(t.roll_deg, 2), fixed(spec.roll_tolerance_deg, 1))
                     .arg(inBand(std::abs(t.roll_deg) <= spec.roll_tolerance_deg));
-  for (const auto& x : r.warnings) w.warnings << adviceText(x);
-  for (const auto& x : r.notes) w.notes << adviceText(x);
+  for (const auto& x : r.warnings) w.warnings << withPointLabels(adviceText(x), v);
+  for (const auto& x : r.notes) w.notes << withPointLabels(adviceText(x), v);
   w.signature = WorkOrder::tr("Done by: ______________________   Signature: ______________________   Date: ____________");
   return w;
 }
