@@ -89,6 +89,7 @@ GliderCheckModel::GliderCheckModel(const MissionLog& log, const VehicleProfile& 
 
   analysis::SegmentOptions so;
   so.glider = true;
+  so.level_rate_mps = o.glide_end_rate_mps;
   const analysis::Segmentation seg = analysis::detectSegments(log, so);
   const auto& win = seg.operating;
   if (win.empty()) throw InputError("depth", "no steady dive or climb was found in the log", "check the depth channel");
