@@ -10,8 +10,8 @@
 // Usage: glider_ballast_bench [--synthetic | --real] [--reps N] [--seed-offset K]
 //        glider_ballast_bench --case TERM VALUE SEED deep|shallow
 // Environment: GLIDER_BENCH_VERBOSE=1 (candidates of a miss), GLIDER_BENCH_FIT_LIFT=1
-// (lift slope fitted), GLIDER_BENCH_GLIDE_END=MPS (vertical speed that ends a glide;
-// 0.02 = the earlier cut), GLIDER_BENCH_NO_ABORT=1 (the earlier truth that hovers
+// (lift slope fitted), GLIDER_BENCH_OLD_GLIDES=1 (the earlier glide cut:
+// 2 cm/s, no stall window), GLIDER_BENCH_NO_ABORT=1 (the earlier truth that hovers
 // after a stall), GLIDER_BENCH_DUMP=FILE (write the case's log).
 #include <algorithm>
 #include <cmath>
@@ -124,8 +124,13 @@ Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool
 
   CheckSetup setup;
   if (const char* e = std::getenv("GLIDER_BENCH_FIT_LIFT")) setup.glider.fit_lift_slope = std::string(e) == "1";
-  // GLIDER_BENCH_GLIDE_END=0.02: glides cut at the AUV level band as before (before/after figures).
-  if (const char* e = std::getenv("GLIDER_BENCH_GLIDE_END")) setup.glider.glide_end_rate_mps = std::stod(e);
+  // GLIDER_BENCH_OLD_GLIDES=1: glides cut as before (end below 2 cm/s, start above 5 cm/s, no stall
+  // window), for before/after figures.
+  if (const char* e = std::getenv("GLIDER_BENCH_OLD_GLIDES"); e && std::string(e) == "1") {
+    setup.glider.glide_end_rate_mps = 0.02;
+    setup.glider.glide_start_rate_mps = 0.05;
+    setup.glider.stall_window_s = 0.0;
+  }
   const auto model = makeCheckModel(log, v, AUV_RESOURCE_DIR, setup);
   const ModelCheckResult r = runModelCheck(*model);
   const auto& gm = dynamic_cast<const GliderCheckModel&>(*model);
