@@ -7,10 +7,11 @@
 //   per log: hidden term, top-1 found, value and truth, mass-to-add error of
 //   the model check's joint answer and of the analysis alone;
 //   summary: top-1, value within 30 %, mean/worst |error|, false terms on controls.
-// Usage: glider_ballast_bench [--synthetic | --real] [--reps N]
+// Usage: glider_ballast_bench [--synthetic | --real] [--reps N] [--seed-offset K]
 //        glider_ballast_bench --case TERM VALUE SEED deep|shallow
 // Environment: GLIDER_BENCH_VERBOSE=1 (candidates of a miss), GLIDER_BENCH_FIT_LIFT=1
-// (lift slope fitted), GLIDER_BENCH_NO_ABORT=1 (the earlier truth that hovers
+// (lift slope fitted), GLIDER_BENCH_OLD_GLIDES=1 (the earlier glide cut:
+// 2 cm/s, no stall window), GLIDER_BENCH_NO_ABORT=1 (the earlier truth that hovers
 // after a stall), GLIDER_BENCH_DUMP=FILE (write the case's log).
 #include <algorithm>
 #include <cmath>
@@ -60,6 +61,24 @@ struct Outcome {
   double err_joint_g = 0.0, err_analysis_g = 0.0;
 };
 
+// GLIDER_BENCH_ROWS=FILE: per sample time, pressure, pitch, phase, unit and
+// the equation error of the base (ballast only) and final fits (diagnosis).
+void dumpRows(const GliderCheckModel& gm, const ModelCheckResult& r, const char* file) {
+  const SampleTable& S = gm.samples();
+  const std::size_t C = gm.equationChannels().size();
+  std::vector<std::uint32_t> rows(S.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = static_cast<std::uint32_t>(i);
+  std::vector<double> eb(rows.size() * C), ef(rows.size() * C);
+  gm.equationError(r.base_params, rows, eb.data());
+  gm.equationError(r.final_params, rows, ef.data());
+  std::ofstream out(file);
+  out << "t,p,pitch,dive,unit,block,w_base,w_model_base,res_base,res_final\n";
+  for (std::size_t i = 0; i < S.size(); ++i)
+    out << S.t[i] << ',' << S.pressure_dbar[i] << ',' << S.pitch_deg[i] << ',' << (S.phase[i] == Phase::kDive) << ',' << S.unit[i]
+        << ',' << S.block[i] << ',' << gm.modelW(r.base_params, i, S.pressure_dbar[i]) + eb[i * C] << ','
+        << gm.modelW(r.base_params, i, S.pressure_dbar[i]) << ',' << eb[i * C] << ',' << ef[i * C] << '\n';
+}
+
 Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool deep) {
   std::mt19937_64 rng(seed * 7777 + 13);
   std::uniform_real_distribution<double> U(0.0, 1.0);
@@ -105,10 +124,18 @@ Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool
 
   CheckSetup setup;
   if (const char* e = std::getenv("GLIDER_BENCH_FIT_LIFT")) setup.glider.fit_lift_slope = std::string(e) == "1";
+  // GLIDER_BENCH_OLD_GLIDES=1: glides cut as before (end below 2 cm/s, start above 5 cm/s, no stall
+  // window), for before/after figures.
+  if (const char* e = std::getenv("GLIDER_BENCH_OLD_GLIDES"); e && std::string(e) == "1") {
+    setup.glider.glide_end_rate_mps = 0.02;
+    setup.glider.glide_start_rate_mps = 0.05;
+    setup.glider.stall_window_s = 0.0;
+  }
   const auto model = makeCheckModel(log, v, AUV_RESOURCE_DIR, setup);
   const ModelCheckResult r = runModelCheck(*model);
   const auto& gm = dynamic_cast<const GliderCheckModel&>(*model);
   const GliderBallastAnswer a = gliderBallastAnswer(gm, r, target);
+  if (const char* rowsFile = std::getenv("GLIDER_BENCH_ROWS")) dumpRows(gm, r, rowsFile);
   analysis::AnalysisOptions ao;
   ao.glider_target.density_kgm3 = target.density_kgm3;
   ao.glider_target.pressure_dbar = target.pressure_dbar;
@@ -152,7 +179,7 @@ Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool
   return o;
 }
 
-void synthetic(const VehicleProfile& v, int reps) {
+void synthetic(const VehicleProfile& v, int reps, std::uint64_t seedOffset) {
   std::puts("(a) concealed-effect glider logs, truth flight constants off nominal; target deeper and colder than the log");
   std::puts("    errors = answer - truth of the grams to add for neutral at the target (pump at zero, mass at log end)");
   const std::vector<Case> cases = {{"hull_compressibility", 4e-6}, {"hull_compressibility", 7e-6},
@@ -164,10 +191,12 @@ void synthetic(const VehicleProfile& v, int reps) {
   double sumJ = 0, worstJ = 0, sumA = 0, worstA = 0;
   // Seeds 1..20 are the original two per case (shallow, deep); further
   // pairs use seeds 101.., 201.., ... so the first 20 logs stay the same.
+  // --seed-offset K shifts them all (another draw of truths and noise).
   for (std::size_t ci = 0; ci < cases.size(); ++ci) {
     const Case& k = cases[ci];
     for (int rep = 0; rep < reps; ++rep) {
-      const std::uint64_t seed = 100 * static_cast<std::uint64_t>(rep / 2) + 1 + 2 * ci + static_cast<std::uint64_t>(rep % 2);
+      const std::uint64_t seed =
+          seedOffset + 100 * static_cast<std::uint64_t>(rep / 2) + 1 + 2 * ci + static_cast<std::uint64_t>(rep % 2);
       const Outcome o = runCase(v, k, seed, rep % 2 == 1);
       ++n;
       sumJ += std::abs(o.err_joint_g);
@@ -184,7 +213,8 @@ void synthetic(const VehicleProfile& v, int reps) {
       }
     }
   }
-  std::printf("\nSUMMARY (a): %d effect logs, %d controls (%d seeds per case, half shallow, half deep)\n", effects, controls, reps);
+  std::printf("\nSUMMARY (a): %d effect logs, %d controls (%d seeds per case, half shallow, half deep, seed offset %llu)\n", effects,
+              controls, reps, static_cast<unsigned long long>(seedOffset));
   std::printf("  top-1 right term              %d / %d\n", top1, effects);
   std::printf("  value within 30 %%             %d / %d (%.0f %%; target >= 90 %%)\n", within, effects, 100.0 * within / effects);
   std::printf("  false terms on controls       %d (target 0)\n", falseOnControls);
@@ -396,10 +426,15 @@ int main(int argc, char** argv) {
     return 0;
   }
   // --reps N: seeds per case (default 6: 48 effect logs, 12 controls).
+  // --seed-offset K: every seed + K (default 0), to check on truths the
+  // figures above were not looked at with.
   int reps = 6;
-  for (int i = 1; i + 1 < argc; ++i)
+  std::uint64_t seedOffset = 0;
+  for (int i = 1; i + 1 < argc; ++i) {
     if (std::string(argv[i]) == "--reps") reps = std::max(1, std::atoi(argv[i + 1]));
-  if (!onlyReal) synthetic(slocum, reps);
+    if (std::string(argv[i]) == "--seed-offset") seedOffset = std::stoull(argv[i + 1]);
+  }
+  if (!onlyReal) synthetic(slocum, reps, seedOffset);
   if (!onlySynthetic) real(slocum, loadVehicleProfile(res + "/vehicles/seaglider.json"));
   return 0;
 }

@@ -21,6 +21,24 @@ constexpr double kStep = 0.05 * std::numbers::pi / 180.0;
 constexpr double kLo = 0.5 * std::numbers::pi / 180.0;
 constexpr double kHi = 85.0 * std::numbers::pi / 180.0;
 
+// Samples whose mean vertical speed over `window_s` around them is below
+// `min_rate`: the glider hovers (a stall) and is not gliding. The 20 s rate
+// of a slow glide dips below that often in internal waves; a 300 s mean
+// does not, unless the glider has stopped.
+std::vector<bool> stalledSamples(const TimeSeries& obs, double window_s, double min_rate) {
+  std::vector<bool> out(obs.size(), false);
+  if (!(window_s > 0.0)) return out;
+  std::size_t a = 0, b = 0;
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    while (obs.t[i] - obs.t[a] > 0.5 * window_s) ++a;
+    while (b + 1 < obs.size() && obs.t[b + 1] - obs.t[i] <= 0.5 * window_s) ++b;
+    const double dt = obs.t[b] - obs.t[a];
+    if (dt < 0.5 * window_s || std::isnan(obs.v[a]) || std::isnan(obs.v[b])) continue;
+    out[i] = std::abs(obs.v[b] - obs.v[a]) / dt < min_rate;  // dbar ~ m
+  }
+  return out;
+}
+
 }  // namespace
 
 // alpha(|theta|) tabulated per Cd0; the fits evaluate thousands of samples
@@ -90,6 +108,8 @@ GliderCheckModel::GliderCheckModel(const MissionLog& log, const VehicleProfile& 
 
   analysis::SegmentOptions so;
   so.glider = true;
+  so.level_rate_mps = o.glide_end_rate_mps;
+  so.dive_rate_mps = o.glide_start_rate_mps;
   const analysis::Segmentation seg = analysis::detectSegments(log, so);
   const auto& win = seg.operating;
   if (win.empty()) throw InputError("depth", "no steady dive or climb was found in the log", "check the depth channel");
@@ -99,6 +119,7 @@ GliderCheckModel::GliderCheckModel(const MissionLog& log, const VehicleProfile& 
   const TimeSeries obs = log.series(obs_channel_);
   const std::vector<double> rate = analysis::localRate(obs, o.rate_window_s, so.max_gap_s, 1.0);
 
+  const std::vector<bool> stalled = stalledSamples(obs, o.stall_window_s, o.glide_end_rate_mps);
   // Observation samples inside glides, with their window.
   std::vector<double> times;
   std::vector<std::size_t> obsIndex, winIndex;
@@ -108,6 +129,7 @@ GliderCheckModel::GliderCheckModel(const MissionLog& log, const VehicleProfile& 
       while (w < win.size() && win[w].end_s < obs.t[i]) ++w;
       if (w == win.size()) break;
       if (obs.t[i] < win[w].start_s || std::isnan(rate[i])) continue;
+      if (stalled[i]) continue;
       times.push_back(obs.t[i]);
       obsIndex.push_back(i);
       winIndex.push_back(w);
@@ -180,12 +202,16 @@ GliderCheckModel::GliderCheckModel(const MissionLog& log, const VehicleProfile& 
   // too few yos, pieces of the glides instead (each half of the data then
   // still holds dives and climbs).
   {
+    // A dive split in two (it slowed, then sped up again) is still one yo.
     int yo = -1;
     int lastBlock = -1;
+    bool lastDive = false;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
       const int b = table_.block[i];
-      if (b != lastBlock && (table_.phase[i] == Phase::kDive || yo < 0)) ++yo;
+      const bool dive = table_.phase[i] == Phase::kDive;
+      if (b != lastBlock && ((dive && !lastDive) || yo < 0)) ++yo;
       lastBlock = b;
+      lastDive = dive;
       table_.unit.push_back(yo);
     }
     if (yo + 1 < o.min_yos_for_yo_units) {

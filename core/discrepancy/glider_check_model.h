@@ -37,6 +37,18 @@ struct GliderCheckOptions {
   int min_yos_for_yo_units = 4;  // fewer yos: cross-validate over 10-minute pieces of the glides instead
   double piece_s = 600.0;
   double rate_window_s = 10.0;
+  // A glide ends when its vertical speed (20 s boxcar) falls below this, not
+  // at the AUV's level band (2 cm/s): a glide near its neutral depth is slow
+  // but still steady, and those samples pin the buoyancy (and the volume
+  // terms and drift that change it) most sharply; a glider that makes less
+  // than 5 m in 600 s (0.8 cm/s) is stalled and aborts.
+  double glide_end_rate_mps = 0.005;
+  // ... and starts (again) above this: a slow glide that an internal wave
+  // stopped for a moment goes on being used when it moves again.
+  double glide_start_rate_mps = 0.02;
+  // Samples whose mean vertical speed over this window is below
+  // glide_end_rate_mps hover (a stall before the abort): no steady glide.
+  double stall_window_s = 300.0;
   std::size_t max_rows = 30000;  // evenly decimated beyond this (the rate is a 10 s boxcar)
   double default_density_kgm3 = 1025.0;  // only when the log has no density
   // Lift slope (Seaglider: hd_a) fitted as a scale of the profile's value

@@ -104,5 +104,50 @@ TEST(GliderBallastAnswer, ControlAddsNoTermAndStillLandsOnTheTruth) {
   EXPECT_EQ(x.joint_error_g, x.base_error_g);
 }
 
+// A dive whose weaker pump setting is nearly neutral at depth slows for
+// hours (vertical speed below 2 cm/s) and stalls: the glider aborts there.
+// Those slow samples are steady glides too and pin the buoyancy most
+// sharply; cut at an AUV's level band (2 cm/s) the log's only long dive
+// loses its deeper half and a 1.5 deg pitch-sensor bias is no longer found.
+TEST(GliderBallastAnswer, SlowGlideToAStallStaysInTheFit) {
+  SyntheticGliderTruth t = offNominal();
+  t.Cd0 = 0.173;
+  t.constants.lift_slope_per_rad = 7.64;
+  t.constants.induced_drag_per_rad2 = 10.71;
+  t.net_buoyancy_kg = 0.1215;
+  t.pitch_bias_deg = 1.5;
+  SyntheticGliderMission m = mission(114);
+  m.max_depth_m = 400.0;
+  m.yos = 6;
+  const MissionLog log = synthesizeGliderLog(t, m);
+  ASSERT_NE(log.metadataValue("truth_abort_time_s"), nullptr) << "the truth must stall and abort";
+  const double abortT = std::stod(*log.metadataValue("truth_abort_time_s"));
+  const TimeSeries depth = log.series("depth");
+  double stallDepth = 0.0, slowFrom = 0.0;
+  for (std::size_t i = 0; i < depth.size() && depth.t[i] < abortT; ++i) stallDepth = depth.v[i];
+  for (std::size_t i = 0; i < depth.size() && depth.t[i] < abortT; ++i)
+    if (depth.t[i] > abortT - 3600.0 && slowFrom == 0.0) slowFrom = depth.v[i];
+  ASSERT_LT(stallDepth - slowFrom, 0.02 * 3600.0) << "the last hour before the stall is slower than 2 cm/s";
+
+  analysis::GliderTarget target;
+  target.pressure_dbar = 600.0;
+  target.temperature_degC = m.deep_temperature_degC - 1.5;
+  target.density_kgm3 = seawater::density(m.deep_salinity_psu, target.temperature_degC, target.pressure_dbar);
+  const double V0 = std::stod(*log.metadataValue("truth_hull_volume_m3"));
+  const double truth = 1000 * analysis::gliderMassToAddKg(V0, 0.0, t.constants.thermal_expansion_per_degC,
+                                                          t.constants.reference_temperature_degC, target, t.constants.mass_kg);
+  const GliderCheckModel model(log, slocum());
+  // Most of the last hour before the abort (1 Hz; its last 600 s hover) is in the fit.
+  std::size_t lastHour = 0;
+  for (double ti : model.samples().t) lastHour += ti > abortT - 3600.0 && ti < abortT;
+  EXPECT_GT(lastHour, 1800u) << "stall at " << stallDepth << " m";
+  const ModelCheckResult r = runModelCheck(model);
+  ASSERT_FALSE(r.missing_physics.empty());
+  EXPECT_EQ(r.missing_physics.front().id, "pitch_sensor_bias");
+  EXPECT_NEAR(r.missing_physics.front().value, 1.5, 0.45);  // display unit: deg
+  const GliderBallastAnswer a = gliderBallastAnswer(model, r, target);
+  EXPECT_LT(std::abs(a.mass_to_add_g - truth), 12.0) << "answer " << a.mass_to_add_g << " g, truth " << truth << " g";
+}
+
 }  // namespace
 }  // namespace auv::discrepancy
