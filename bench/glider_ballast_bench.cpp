@@ -58,7 +58,7 @@ struct Case {
 struct Outcome {
   bool top1 = false, within30 = false;
   int false_terms = 0;
-  double err_joint_g = 0.0, err_analysis_g = 0.0;
+  double err_joint_g = 0.0, err_analysis_g = 0.0, sigma_joint_g = 0.0;
 };
 
 // GLIDER_BENCH_ROWS=FILE: per sample time, pressure, pitch, phase, unit and
@@ -159,6 +159,7 @@ Outcome runCase(const VehicleProfile& v, const Case& k, std::uint64_t seed, bool
       if (mp.id != k.term) ++o.false_terms;
   }
   o.err_joint_g = a.mass_to_add_g - 1000 * truthAdd;
+  o.sigma_joint_g = a.mass_to_add_sigma_g;
   o.err_analysis_g = ar.mass_to_add_g.value - 1000 * truthAdd;
   const double scale = k.term == "pitch_sensor_bias" ? 180.0 / M_PI : 1.0;
   const bool aborted = log.metadataValue("truth_abort_time_s") != nullptr;
@@ -187,7 +188,7 @@ void synthetic(const VehicleProfile& v, int reps, std::uint64_t seedOffset) {
                                    {"mass_drift", 0.010},          {"mass_drift", -0.006},
                                    {"pitch_sensor_bias", 1.5 * M_PI / 180}, {"pitch_sensor_bias", -2.0 * M_PI / 180},
                                    {"", 0.0}, {"", 0.0}};
-  int effects = 0, top1 = 0, within = 0, controls = 0, falseOnControls = 0, n = 0;
+  int effects = 0, top1 = 0, within = 0, controls = 0, falseOnControls = 0, n = 0, covered = 0;
   double sumJ = 0, worstJ = 0, sumA = 0, worstA = 0;
   // Seeds 1..20 are the original two per case (shallow, deep); further
   // pairs use seeds 101.., 201.., ... so the first 20 logs stay the same.
@@ -201,6 +202,7 @@ void synthetic(const VehicleProfile& v, int reps, std::uint64_t seedOffset) {
       ++n;
       sumJ += std::abs(o.err_joint_g);
       worstJ = std::max(worstJ, std::abs(o.err_joint_g));
+      covered += std::abs(o.err_joint_g) <= 2 * o.sigma_joint_g;
       sumA += std::abs(o.err_analysis_g);
       worstA = std::max(worstA, std::abs(o.err_analysis_g));
       if (k.term.empty()) {
@@ -219,6 +221,7 @@ void synthetic(const VehicleProfile& v, int reps, std::uint64_t seedOffset) {
   std::printf("  value within 30 %%             %d / %d (%.0f %%; target >= 90 %%)\n", within, effects, 100.0 * within / effects);
   std::printf("  false terms on controls       %d (target 0)\n", falseOnControls);
   std::printf("  mass to add, model check      mean |error| %.1f g, worst %.1f g (targets 5 g, 12 g)\n", sumJ / n, worstJ);
+  std::printf("  2-sigma coverage of the grams  %d / %d (%.0f %%)\n", covered, n, 100.0 * covered / n);
   std::printf("  mass to add, analysis alone   mean |error| %.1f g, worst %.1f g\n", sumA / n, worstA);
 }
 

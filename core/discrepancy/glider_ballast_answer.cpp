@@ -1,5 +1,6 @@
 #include "discrepancy/glider_ballast_answer.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace auv::discrepancy {
@@ -52,6 +53,33 @@ GliderBallastAnswer gliderBallastAnswer(const GliderCheckModel& m, const ModelCh
       a.mass_drift_sigma_g_per_h = 1000.0 * sigma;
     }
   }
+  // A term found over a rival (model_check.h): the answer with the rival
+  // instead, weighted by its bootstrap share, widens the sigma (model
+  // averaging), so a coin-flip between compressibility and thermal
+  // expansion does not read as a firm number.
+  for (const RivalFit& rf : r.rival_fits) {
+    const double d = m.massToAddKg(rf.params, t) - m.massToAddKg(p, t);
+    var += rf.weight * d * d;
+    a.rival_spread_g = std::max(a.rival_spread_g, 1000.0 * std::abs(d));
+  }
+  // A candidate the check did not accept but the bootstrap often picked
+  // (a mass drift that helps the equation error but not the held-out
+  // simulation, on a short log) may still be there: its linearised value,
+  // weighted by its inclusion probability, widens the sigma too.
+  for (const CandidateReport& c : r.candidates) {
+    const auto k = findTerm(c.id);
+    if (!k || !(c.inclusion_probability > 0.0) || !std::isfinite(c.value)) continue;
+    const auto used = [&](const std::string& id) {
+      return std::find(a.terms_used.begin(), a.terms_used.end(), id) != a.terms_used.end() ||
+             std::any_of(r.rival_fits.begin(), r.rival_fits.end(), [&](const RivalFit& rf) { return rf.rival == id; });
+    };
+    if (used(c.id)) continue;
+    Params with = p;
+    with.terms[*k] += c.value / lib[*k].display_scale;
+    const double d = m.massToAddKg(with, t) - m.massToAddKg(p, t);
+    var += c.inclusion_probability * d * d;
+    a.unconfirmed_spread_g = std::max(a.unconfirmed_spread_g, 1000.0 * std::abs(d) * std::sqrt(c.inclusion_probability));
+  }
   a.mass_to_add_sigma_g = 1000.0 * std::sqrt(var);
   const auto total = [&](const char* id) {
     const auto k = findTerm(id);
@@ -92,6 +120,8 @@ void mergeGliderAnswer(nlohmann::json& j, const GliderBallastAnswer& a) {
       {"mass_change_at_end_g", num(a.mass_change_at_end_g)},
       {"hours_from_fit_reference_to_end", num(a.hours_to_end)},
       {"pitch_bias_removed_deg", num(a.pitch_bias_removed_deg)},
+      {"rival_spread_g", num(a.rival_spread_g)},
+      {"unconfirmed_spread_g", num(a.unconfirmed_spread_g)},
       {"compressibility_per_dbar", num(a.compressibility_per_dbar)},
       {"thermal_expansion_per_degC", num(a.thermal_expansion_per_degC)}};
 }

@@ -29,6 +29,8 @@ struct GliderBallastAnswer {
   double mass_change_at_end_g = 0.0;          // carried from the log's middle to its end
   double hours_to_end = 0.0;
   double pitch_bias_removed_deg = 0.0;
+  double rival_spread_g = 0.0;                // largest change of the answer if a found term's rival were the truth
+  double unconfirmed_spread_g = 0.0;          // largest sigma share of a candidate not accepted (its value x sqrt(inclusion))
   double compressibility_per_dbar = 0.0;      // in use (profile + accepted)
   double thermal_expansion_per_degC = 0.0;
   std::vector<std::string> terms_used;

@@ -81,6 +81,17 @@ ModelCheckResult runModelCheck(const CheckModel& m, const ModelCheckOptions& o) 
   // --- 5. final joint fit ------------------------------------------------------
   const Fit fin = jointRefit(s, fitRows, acc.accepted, base.params, acc.found, R);
 
+  // A term accepted over a rival: the same fit with the rival instead.
+  for (const MissingPhysics& mp : acc.found) {
+    double total = mp.inclusion_probability;
+    for (const TermRival& rv : mp.rivals) total += rv.inclusion_probability;
+    for (const TermRival& rv : mp.rivals) {
+      std::vector<std::size_t> swapped = acc.accepted;
+      std::replace(swapped.begin(), swapped.end(), *findTerm(mp.id), *findTerm(rv.id));
+      R.rival_fits.push_back({mp.id, rv.id, rv.inclusion_probability / total, fit(s, fitRows, swapped, base.params).params});
+    }
+  }
+
   // --- 6, 7. RMS before/after, fitted and held-out; localisation -------------
   reportRmsAndLocalisation(s, scorer, acc.accepted, base.params, fin.params, lin.raw, all, R);
   locateAcceptedTerms(s, fin.params, all, acc.found);

@@ -33,6 +33,14 @@ struct ModelCheckOptions {
   SelectionOptions selection;
   int bootstrap_replicates = 60;
   double min_inclusion = 0.6;    // bootstrap inclusion probability to go on to the simulation check
+  // ... or, for a term the full data selected whose replicates split with a
+  // rival (another term picked instead, hardly ever both): its own inclusion
+  // at least min_inclusion_with_rivals, each rival's at least
+  // min_rival_inclusion and co-selected in at most rival_max_together of
+  // the smaller one's replicates, and term or a rival in min_inclusion.
+  double min_inclusion_with_rivals = 0.3;
+  double min_rival_inclusion = 0.2;
+  double rival_max_together = 0.25;
   double min_sim_gain = 0.01;    // relative drop of the held-out simulation cost to accept
   // ... or, when a calibrated constant already mimics the term in simulation
   // (a calibrated linear pitch damping flies like an extra quadratic one),
@@ -56,6 +64,13 @@ struct ChannelRms {
   std::size_t samples = 0;
 };
 
+// A term the bootstrap picked instead of a found one, hardly ever with it:
+// the log says something is there but cannot say firmly which of the two.
+struct TermRival {
+  std::string id;
+  double inclusion_probability = 0.0;
+};
+
 struct MissingPhysics {
   std::string id, unit;
   double value = 0.0, sigma = 0.0;  // display unit: what the vehicle has (profile_value + the fitted increment)
@@ -68,6 +83,7 @@ struct MissingPhysics {
   double t_value = 0.0;
   double heldout_gain = 0.0;  // relative drop of the held-out simulation cost
   std::vector<std::string> confused_with;  // candidates this log cannot tell it from
+  std::vector<TermRival> rivals;           // picked instead of it in part of the bootstrap (also in confused_with)
   std::string evidence;  // set when a prior (an independent measurement) is what separates it
 };
 
@@ -95,6 +111,14 @@ struct IdentifiabilityIssue {
   std::string message;
 };
 
+// The fit with a found term swapped for one of its rivals, for answers that
+// must carry the doubt (glider_ballast_answer.h: model averaging).
+struct RivalFit {
+  std::string term, rival;
+  double weight = 0.0;  // the rival's share of the replicates that picked either
+  Params params;
+};
+
 struct ModelCheckResult {
   Message model;
   std::size_t samples = 0;
@@ -115,6 +139,7 @@ struct ModelCheckResult {
   std::vector<double> nuisance, nuisance_sigma;
   TermValues accepted{};  // SI, fitted increments over the profile's baseline
   Params final_params, base_params;
+  std::vector<RivalFit> rival_fits;
   std::vector<std::string> notes, warnings;
 };
 

@@ -53,6 +53,10 @@ nlohmann::json toJson(const ModelCheckResult& r) {
                         {"delta_bic", num(m.delta_bic)},
                         {"heldout_gain", num(m.heldout_gain)}};
     if (!m.confused_with.empty()) x["confused_with"] = m.confused_with;
+    if (!m.rivals.empty()) {
+      x["rivals"] = nlohmann::json::array();
+      for (const TermRival& rv : m.rivals) x["rivals"].push_back({{"id", rv.id}, {"inclusion_probability", num(rv.inclusion_probability)}});
+    }
     if (!m.evidence.empty()) x["evidence"] = m.evidence;
     mp.push_back(x);
   }

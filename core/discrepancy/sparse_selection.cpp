@@ -217,22 +217,32 @@ SelectionResult forwardStepwise(const LinearProblem& lp, const std::vector<int>&
   return res;
 }
 
-std::vector<double> inclusionProbabilities(const LinearProblem& lp, const std::vector<int>& candidates, int replicates,
-                                           std::uint64_t seed, const SelectionOptions& o) {
-  std::vector<double> p(candidates.size(), 0.0);
+Inclusion inclusionStatistics(const LinearProblem& lp, const std::vector<int>& candidates, int replicates,
+                              std::uint64_t seed, const SelectionOptions& o) {
+  const auto C = static_cast<Eigen::Index>(candidates.size());
+  Inclusion out{std::vector<double>(candidates.size(), 0.0), Eigen::MatrixXd::Zero(C, C)};
   const int U = lp.units();
-  if (U < 2 || replicates <= 0) return p;
+  if (U < 2 || replicates <= 0) return out;
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> pick(0, U - 1);
   for (int b = 0; b < replicates; ++b) {
     std::vector<double> w(static_cast<std::size_t>(U), 0.0);
     for (int k = 0; k < U; ++k) w[static_cast<std::size_t>(pick(rng))] += 1.0;
     const SelectionResult s = forwardStepwise(lp, candidates, w, o, false);
-    for (std::size_t c = 0; c < candidates.size(); ++c)
-      if (std::find(s.selected.begin(), s.selected.end(), candidates[c]) != s.selected.end()) p[c] += 1.0;
+    std::vector<Eigen::Index> in;
+    for (Eigen::Index c = 0; c < C; ++c)
+      if (std::find(s.selected.begin(), s.selected.end(), candidates[static_cast<std::size_t>(c)]) != s.selected.end()) in.push_back(c);
+    for (Eigen::Index i : in)
+      for (Eigen::Index j : in) out.together(i, j) += 1.0;
   }
-  for (double& x : p) x /= static_cast<double>(replicates);
-  return p;
+  out.together /= static_cast<double>(replicates);
+  for (Eigen::Index c = 0; c < C; ++c) out.p[static_cast<std::size_t>(c)] = out.together(c, c);
+  return out;
+}
+
+std::vector<double> inclusionProbabilities(const LinearProblem& lp, const std::vector<int>& candidates, int replicates,
+                                           std::uint64_t seed, const SelectionOptions& o) {
+  return inclusionStatistics(lp, candidates, replicates, seed, o).p;
 }
 
 std::vector<int> stlsq(const LinearProblem& lp, const std::vector<int>& candidates, double threshold) {

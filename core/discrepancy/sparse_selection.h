@@ -83,7 +83,15 @@ SelectionResult forwardStepwise(const LinearProblem& lp, const std::vector<int>&
                                 const std::vector<double>& unit_weight, const SelectionOptions& options, bool use_cv);
 
 // Bootstrap over units: fraction of replicates in which each candidate is
-// selected (same order as `candidates`).
+// selected (same order as `candidates`), and in which each pair is selected
+// together: two terms that each explain the same residual are picked in
+// different replicates and hardly ever together (rivals, term_acceptance.h).
+struct Inclusion {
+  std::vector<double> p;
+  Eigen::MatrixXd together;  // [i][j]: fraction of replicates with both i and j; diagonal = p
+};
+Inclusion inclusionStatistics(const LinearProblem& lp, const std::vector<int>& candidates, int replicates,
+                              std::uint64_t seed, const SelectionOptions& options);
 std::vector<double> inclusionProbabilities(const LinearProblem& lp, const std::vector<int>& candidates, int replicates,
                                            std::uint64_t seed, const SelectionOptions& options);
 

@@ -1,5 +1,6 @@
 #include "discrepancy/term_acceptance.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -17,6 +18,29 @@ double heldOutEquationCost(const FitSetup& s, const HeldOut& h) {
   for (std::size_t k = 0; k < s.C; ++k)
     if (h.eq_n[k] > 0) c += h.eq_sse[k] / h.eq_n[k] / (s.sigma[k] * s.sigma[k]);
   return c;
+}
+
+// The rivals of candidate k (options in model_check.h) and the share of
+// replicates that picked k or one of them (union bound from the pair counts).
+struct RivalSet {
+  std::vector<TermRival> rivals;
+  double group_inclusion = 0.0;
+};
+
+RivalSet rivalsOf(std::size_t k, const TermSelection& ts, const std::vector<std::size_t>& cand,
+                  const std::vector<std::size_t>& accepted, const ModelCheckOptions& o) {
+  RivalSet out;
+  out.group_inclusion = ts.incl[k];
+  for (std::size_t l = 0; l < cand.size(); ++l) {
+    if (l == k || ts.incl[l] < o.min_rival_inclusion) continue;
+    if (std::find(accepted.begin(), accepted.end(), cand[l]) != accepted.end()) continue;
+    const double both = ts.together(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(l));
+    if (both > o.rival_max_together * std::min(ts.incl[k], ts.incl[l])) continue;
+    out.rivals.push_back({std::string(termLibrary()[cand[l]].id), ts.incl[l]});
+    out.group_inclusion += ts.incl[l] - both;
+  }
+  out.group_inclusion = std::min(out.group_inclusion, 1.0);
+  return out;
 }
 
 }  // namespace
@@ -37,7 +61,9 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     const std::size_t term = cand[k];
     CandidateReport& c = R.candidates[k];
     char buf[160];
-    if (incl[k] < o.min_inclusion) {
+    RivalSet rs;
+    if (incl[k] < o.min_inclusion && incl[k] >= o.min_inclusion_with_rivals) rs = rivalsOf(k, ts, cand, accepted, o);
+    if (incl[k] < o.min_inclusion && (rs.rivals.empty() || rs.group_inclusion < o.min_inclusion)) {
       std::snprintf(buf, sizeof buf, "selected on all data but only in %.0f %% of bootstrap replicates (< %.0f %%)",
                     100 * incl[k], 100 * o.min_inclusion);
       c.status = buf;
@@ -62,6 +88,12 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     }
     c.status = "accepted";
     MissingPhysics mp;
+    mp.rivals = rs.rivals;
+    for (const TermRival& rv : rs.rivals) {
+      std::snprintf(buf, sizeof buf, " (in %.0f %% of bootstrap replicates %s was picked instead)", 100 * rv.inclusion_probability,
+                    rv.id.c_str());
+      c.status += buf;
+    }
     mp.id = lib[term].id;
     mp.unit = lib[term].unit;
     mp.inclusion_probability = incl[k];
@@ -88,6 +120,8 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     for (std::size_t l = 0; l < cand.size(); ++l)
       if (l != k && std::abs(ts.coll.correlation(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(l))) >= o.collinear_threshold)
         mp.confused_with.emplace_back(lib[cand[l]].id);
+    for (const TermRival& rv : rs.rivals)
+      if (std::find(mp.confused_with.begin(), mp.confused_with.end(), rv.id) == mp.confused_with.end()) mp.confused_with.push_back(rv.id);
     out.found.push_back(mp);
     accepted.push_back(term);
     // Provisional value for the next step's start.

@@ -37,9 +37,17 @@ TermSelection selectTerms(const FitSetup& s, const LinearProblem& lp, const std:
   }
   const std::vector<double> ones(static_cast<std::size_t>(U), 1.0);
   ts.sel = forwardStepwise(lp, eligible, ones, o.selection, true);
-  const std::vector<double> inclEligible = inclusionProbabilities(lp, eligible, o.bootstrap_replicates, o.seed, o.selection);
+  const Inclusion inclEligible = inclusionStatistics(lp, eligible, o.bootstrap_replicates, o.seed, o.selection);
   ts.incl.assign(cand.size(), 0.0);
-  for (std::size_t e = 0; e < eligible.size(); ++e) ts.incl[static_cast<std::size_t>(eligible[e] - s.nN)] = inclEligible[e];
+  const auto K = static_cast<Eigen::Index>(cand.size());
+  ts.together = Eigen::MatrixXd::Zero(K, K);
+  for (std::size_t e = 0; e < eligible.size(); ++e) {
+    const auto k = static_cast<Eigen::Index>(eligible[e] - s.nN);
+    ts.incl[static_cast<std::size_t>(k)] = inclEligible.p[e];
+    for (std::size_t f = 0; f < eligible.size(); ++f)
+      ts.together(k, static_cast<Eigen::Index>(eligible[f] - s.nN)) =
+          inclEligible.together(static_cast<Eigen::Index>(e), static_cast<Eigen::Index>(f));
+  }
   for (int c : stlsq(lp, eligible, o.stlsq_threshold)) R.stlsq_selected.emplace_back(lib[cand[static_cast<std::size_t>(c - s.nN)]].id);
   std::vector<int> nuisanceCols(static_cast<std::size_t>(s.nN));
   std::iota(nuisanceCols.begin(), nuisanceCols.end(), 0);

@@ -16,6 +16,7 @@ struct TermSelection {
   Collinearity coll;           // candidate regressors after the ballast state (with its priors)
   SelectionResult sel;         // over the identifiable candidates
   std::vector<double> incl;    // bootstrap inclusion probability per candidate (0 if not identifiable)
+  Eigen::MatrixXd together;    // fraction of replicates selecting both candidates k and l
 };
 
 // `cand`: library indices of the candidates, columns s.nN + k of `lp`.

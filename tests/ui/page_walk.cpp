@@ -67,9 +67,8 @@ std::vector<WizardSequence> everyWizardSequence() {
        [](const QString&) {
          return readLog(ui::makeSlocumDemoState(kRes), kExamples + "slocum_g2_model-check_compressibility.csv");
        },
-       // The plan pages are the AUV's (a glider's kit has gram pieces the
-       // AUV plan refuses); the glider pre-mission pages are being built.
-       nullptr, ui::OperatorWizard::kModelCheck},
+       // Through the glider pre-mission pages (target water, where the grams go) to Finish.
+       nullptr},
       {"Delphin2 post mission",
        [](const QString&) {
          ui::WizardState s = ui::makeEmptyState(kRes);

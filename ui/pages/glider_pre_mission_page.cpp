@@ -15,6 +15,7 @@
 #include "common/input_error.h"
 #include "history/store.h"
 #include "wizard/history_save.h"
+#include "wizard/model_words.h"
 #include "widgets/inputs.h"
 #include "wizard/operator_wizard.h"
 
@@ -64,7 +65,7 @@ GliderPreMissionPage::GliderPreMissionPage(WizardState& state) : state_(state) {
   kind_pt_->setObjectName("target_pt_choice");
   kind_pt_->setToolTip(tr("Pressure and temperature of the next deployment's water; with a salinity the density follows "
                           "from EOS-80, else the log's salinity is used."));
-  kind_depth_ = new QRadioButton(tr("A dept&h in the log's CTD profile"));
+  kind_depth_ = new QRadioButton(tr("&A depth in the log's CTD profile"));
   kind_depth_->setObjectName("target_depth_choice");
   kind_depth_->setToolTip(tr("Temperature, salinity and pressure at this depth as the log's own CTD measured them."));
   auto* group = new QButtonGroup(this);
@@ -232,12 +233,17 @@ void GliderPreMissionPage::showLogAnswer() {
   QStringList used;
   if (state_.model_check)
     for (const auto& m : state_.model_check->missing_physics)
-      used << tr("%1 = %2 ± %3 %4 (profile %5)")
-                  .arg(q(m.id))
-                  .arg(m.value, 0, 'g', 4)
-                  .arg(m.sigma, 0, 'g', 2)
-                  .arg(q(m.unit))
-                  .arg(m.profile_value, 0, 'g', 4);
+    {
+      QString line = tr("%1 = %2 ± %3 %4 (profile %5)")
+                         .arg(termLabel(m.id))
+                         .arg(m.value, 0, 'g', 4)
+                         .arg(m.sigma, 0, 'g', 2)
+                         .arg(q(m.unit))
+                         .arg(m.profile_value, 0, 'g', 4);
+      // A term the log preferred over a rival: say so, the sigma above carries it.
+      for (const auto& rv : m.rivals) line += " " + tr("(or %1: this log cannot tell them apart for certain)").arg(termLabel(rv.id));
+      used << line;
+    }
   QString t = !state_.model_check ? tr("The model check did not run: the answer uses the profile's compressibility and thermal expansion.")
               : used.isEmpty()    ? tr("The model check found no missing physics: the answer uses the profile's constants.")
                                   : tr("Terms the answer uses: %1.").arg(used.join("; "));

@@ -392,9 +392,13 @@ void ModelCheckPage::showTerms() {
     QString tip = readableModelMessage(m.where);
     if (!m.confused_with.empty()) {
       QStringList c;
-      for (const auto& x : m.confused_with) c << q(x);
+      for (const auto& x : m.confused_with) c << termLabel(x);
       tip += "\n" + tr("This log cannot tell it from: %1").arg(c.join(", "));
     }
+    for (const auto& rv : m.rivals)
+      tip += "\n" + tr("In %1 % of the resampled fits the log chose %2 instead; the answer's uncertainty includes that.")
+                         .arg(qRound(100 * rv.inclusion_probability))
+                         .arg(termLabel(rv.id));
     if (!m.evidence.empty()) tip += "\n" + q(m.evidence);
     name->setToolTip(tip);
     terms_->setItem(r, 0, name);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "discrepancy/glider_ballast_answer.h"
 #include "discrepancy/model_check.h"
@@ -102,6 +103,32 @@ TEST(GliderBallastAnswer, ControlAddsNoTermAndStillLandsOnTheTruth) {
   EXPECT_TRUE(x.a.terms_used.empty());
   EXPECT_LT(std::abs(x.joint_error_g), 8.0) << "joint " << x.joint_error_g << " g";
   EXPECT_EQ(x.joint_error_g, x.base_error_g);
+}
+
+// A shallow log where temperature falls as pressure rises: a hull
+// compressibility and a thermal expansion explain the same buoyancy loss
+// with depth, and the bootstrap picks one or the other about half the time
+// each. The check still names the one the full data prefers (with the
+// other as its rival), and the answer for a deeper, colder target carries
+// the doubt in its sigma instead of a firm number that misses by 40 g.
+// Truth drawn as glider_ballast_bench draws case 1001 (seed 1001, shallow).
+TEST(GliderBallastAnswer, RivalTermsWidenTheSigmaInsteadOfAFirmMiss) {
+  std::mt19937_64 rng(1001 * 7777 + 13);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  SyntheticGliderTruth t = offNominal();
+  t.Cd0 = 0.10 + 0.12 * U(rng);
+  t.constants.lift_slope_per_rad = 7.53 * (0.93 + 0.14 * U(rng));
+  t.constants.induced_drag_per_rad2 = 10.5 * (0.90 + 0.20 * U(rng));
+  t.net_buoyancy_kg = -0.15 + 0.3 * U(rng);
+  t.constants.compressibility_per_dbar = 4e-6;
+  const Answer x = run(t, mission(1001));
+  ASSERT_FALSE(x.a.terms_used.empty());
+  EXPECT_EQ(x.a.terms_used.front(), "hull_compressibility");
+  EXPECT_NEAR(x.a.compressibility_per_dbar, 4e-6, 1.2e-6);
+  EXPECT_GT(x.a.rival_spread_g, 10.0) << "thermal expansion instead would move the answer";
+  EXPECT_GT(x.a.mass_to_add_sigma_g, 5.0);
+  EXPECT_LT(std::abs(x.joint_error_g), 2.0 * x.a.mass_to_add_sigma_g)
+      << "joint " << x.joint_error_g << " +- " << x.a.mass_to_add_sigma_g << " g";
 }
 
 // A dive whose weaker pump setting is nearly neutral at depth slows for

@@ -102,6 +102,22 @@ TEST(SparseSelection, StepwiseAndStlsqFindTheOneTrueColumn) {
   EXPECT_LT(crossValidationError(lp, {0, 1, 2}, 4), crossValidationError(lp, {0, 1}, 4));
 }
 
+// Two columns that each explain the same effect (column 5 = column 2 plus a
+// little of its own shape): the bootstrap picks one or the other, hardly
+// ever both, so each alone falls short of a firm inclusion while the pair
+// is nearly always there (rivals, term_acceptance.h).
+TEST(SparseSelection, RivalColumnsSplitTheBootstrapAndAreRarelyTogether) {
+  Linear L = makeLinear(0.5, 3);
+  for (Eigen::Index i = 0; i < L.e.size(); ++i) L.J(i, 5) = L.J(i, 2) + 0.01 * std::sin(0.07 * static_cast<double>(i));
+  const LinearProblem lp = buildLinearProblem(L.J, L.e, L.unit, 12, 2, 1200.0);
+  const Inclusion in = inclusionStatistics(lp, {2, 3, 5}, 60, 9, {});
+  EXPECT_GT(in.p[0] + in.p[2] - in.together(0, 2), 0.9);
+  EXPECT_LT(in.together(0, 2), 0.1);
+  EXPECT_GT(std::min(in.p[0], in.p[2]), 0.1);
+  EXPECT_DOUBLE_EQ(in.together(1, 1), in.p[1]);
+  EXPECT_DOUBLE_EQ(in.together(0, 2), in.together(2, 0));
+}
+
 TEST(SparseSelection, PureNoiseSelectsNothing) {
   Linear L = makeLinear(0.5, 5);
   for (Eigen::Index i = 0; i < L.e.size(); ++i) L.e[i] -= 2.0 * L.J(i, 2);
