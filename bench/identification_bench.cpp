@@ -109,7 +109,8 @@ int main(int argc, char** argv) {
                   r.looped ? (std::string(" | log speeds ") + std::to_string(r.log_rpms.size()) + " | plan band " +
                               std::to_string(r.plan_band_lo_kg) + ".." + std::to_string(r.plan_band_hi_kg) +
                               " net " + std::to_string(r.plan_net_kg) + " pitch " + std::to_string(r.plan_pitch_deg) +
-                              " roll " + std::to_string(r.plan_roll_deg) + " | one move: net " +
+                              " roll " + std::to_string(r.plan_roll_deg) + " (kit best " + std::to_string(r.kit_best_roll_deg) +
+                              ") | one move: net " +
                               std::to_string(r.one.net_op_kg) + " (min " + std::to_string(r.one.min_net_kg) + ") pitch " +
                               std::to_string(r.one.pitch_deg) + " roll " + std::to_string(r.one.roll_deg) +
                               (r.one.spec ? " SPEC" : " miss") + " | two: net " + std::to_string(r.two.net_op_kg) +

@@ -36,6 +36,7 @@ struct CaseResult {
   bool looped = false, twice = false;  // twice: the second mission's joint estimate existed
   double plan_band_lo_kg = 0.0, plan_band_hi_kg = 0.0, plan_net_kg = 0.0;
   double plan_pitch_deg = 0.0, plan_roll_deg = 0.0;  // predicted flight pitch (at rest if unknown), roll
+  double kit_best_roll_deg = 0.0;  // the planner's roll when given the truth: what the kit's capacities allow
   Outcome one, two;
   double net2_err_kg = 0.0, net2_sigma_kg = 0.0;  // second mission's joint estimate
 };
