@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "common/input_error.h"
+#include "weighing/weighing_messages.h"
 
 namespace auv {
 namespace {
@@ -62,8 +63,7 @@ CraneResult weighCrane(const CraneWeighing& in) {
                          " to be used (within " + kg(in.sum_tolerance_kg) + " without a warning)");
   }
   if (mismatch > in.sum_tolerance_kg) {
-    r.warnings.push_back("the four readings add up to " + kg(parts) + ", total is " + kg(in.total_kg) +
-                         " (tolerance " + kg(in.sum_tolerance_kg) + "); CG uses the parts, mass uses the total");
+    r.warnings.push_back(Message(weighing::msg::kSumMismatch, {kg(parts), kg(in.total_kg), kg(in.sum_tolerance_kg)}));
   }
   // The CG is a ratio of the parts, so it does not depend on which total we
   // trust; the mass is the hook reading (one scale, one rounding).

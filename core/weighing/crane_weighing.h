@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "common/message.h"
+
 #include "hydrostatics/mass_properties.h"
 
 namespace auv {
@@ -30,7 +32,7 @@ struct CraneResult {
   Eigen::Vector3d cg_sigma_m = Eigen::Vector3d::Zero();
   double sum_of_parts_kg = 0.0;
   double sum_mismatch_kg = 0.0;  // sum(parts) - total
-  std::vector<std::string> warnings;
+  std::vector<Message> warnings;  // weighing_messages.h ids
 };
 
 // Throws InputError for negative or non-finite readings, ropes at the same

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "common/input_error.h"
+#include "weighing/weighing_messages.h"
 
 namespace auv {
 namespace {
@@ -60,18 +61,15 @@ RollTestResult analyseRollTest(const RollTest& t, double M) {
   r.spread_m = *hi - *lo;
   r.cg_yz_m = r.h_m * Eigen::Vector2d(std::sin(beta), std::cos(beta));
   if (r.h_m > 0.05) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf,
-                  "h = %.1f mm is implausibly large for a glider (about 6 mm expected): check the roll signs and "
-                  "which rail the mass hung on",
-                  r.h_m * 1000.0);
-    r.warnings.push_back(buf);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f mm", r.h_m * 1000.0);
+    r.warnings.push_back(Message(weighing::msg::kRollTestHLarge, {buf}));
   }
   if (r.h_each_m.size() > 1 && r.spread_m > 0.2 * r.h_m) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "the single h values spread by %.2f mm (%.0f %% of the mean): repeat the test",
-                  r.spread_m * 1000.0, 100.0 * r.spread_m / r.h_m);
-    r.warnings.push_back(buf);
+    char spread[32], share[32];
+    std::snprintf(spread, sizeof spread, "%.2f mm", r.spread_m * 1000.0);
+    std::snprintf(share, sizeof share, "%.0f %%", 100.0 * r.spread_m / r.h_m);
+    r.warnings.push_back(Message(weighing::msg::kRollTestSpread, {spread, share}));
   }
   return r;
 }

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "common/message.h"
+
 namespace auv {
 
 struct AppliedRollMass {
@@ -32,7 +34,7 @@ struct RollTestResult {
   double spread_m = 0.0;          // max - min of h_each_m
   double initial_roll_rad = 0.0;
   Eigen::Vector2d cg_yz_m = Eigen::Vector2d::Zero();  // G relative to the hull axis
-  std::vector<std::string> warnings;
+  std::vector<Message> warnings;  // weighing_messages.h ids
 };
 
 // Throws InputError naming "roll_test.applied[i].<field>" when a reading

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "common/input_error.h"
+#include "weighing/weighing_messages.h"
 
 namespace auv {
 namespace {
@@ -126,15 +127,12 @@ BottleStep planBottleStep(const TankBuoyancy& t, const TankReadings& r, const Sl
     left -= extra;
   }
   if (std::abs(bow - bow_level) > res / 2.0) {
-    st.warnings.push_back("the bottles cannot hold the level split (bow " + grams(bow_level) + ", aft " +
-                          grams(total - bow_level) + "); the glider will not float level: move a disk or rail weight");
+    st.warnings.push_back(Message(weighing::msg::kBottlesNotLevel, {grams(bow_level), grams(total - bow_level)}));
   }
   if (left > res / 2.0) {
-    st.warnings.push_back("the bottles are full: " + grams(left) +
-                          " more is needed for neutral; the glider stays light (add ballast elsewhere)");
+    st.warnings.push_back(Message(weighing::msg::kBottlesFull, {grams(left)}));
   } else if (left < -res / 2.0) {
-    st.warnings.push_back("the bottles are empty: " + grams(-left) +
-                          " more must come out; the glider stays HEAVY: remove a disk or rail weight");
+    st.warnings.push_back(Message(weighing::msg::kBottlesEmpty, {grams(-left)}));
   }
   st.after = now;
   sharePair(st.after, L, kForePort, kForeStarboard, bow, res);

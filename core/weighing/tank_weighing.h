@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "common/message.h"
+
 #include "vehicle/vehicle_profile.h"
 #include "weighing/roll_test.h"
 #include "weighing/slocum_ballast.h"
@@ -75,7 +77,7 @@ struct BottleStep {
   double net_buoyancy_after_kg = 0.0;  // m_target - mass after; >= 0 unless warned
   double bow_scale_after_kg = 0.0;     // predicted tank readings
   double aft_scale_after_kg = 0.0;
-  std::vector<std::string> warnings;
+  std::vector<Message> warnings;  // weighing_messages.h ids
 };
 
 BottleStep planBottleStep(const TankBuoyancy& t, const TankReadings& r, const SlocumBallast& now,

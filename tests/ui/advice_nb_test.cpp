@@ -13,6 +13,7 @@
 #include "analysis/analysis_messages.h"
 #include "ballast/ballast_messages.h"
 #include "firstmission/first_mission_messages.h"
+#include "weighing/weighing_messages.h"
 #include "history/store.h"
 #include "page_walk.h"
 #include "planning/planning_messages.h"
@@ -40,6 +41,7 @@ std::vector<const MessageFormat*> coreFormats() {
   all.insert(all.end(), std::begin(planning::msg::kAll), std::end(planning::msg::kAll));
   all.insert(all.end(), std::begin(ballast::msg::kAll), std::end(ballast::msg::kAll));
   all.insert(all.end(), std::begin(firstmission::msg::kAll), std::end(firstmission::msg::kAll));
+  all.insert(all.end(), std::begin(weighing::msg::kAll), std::end(weighing::msg::kAll));
   return all;
 }
 

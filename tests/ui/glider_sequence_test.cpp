@@ -39,6 +39,7 @@
 #include "seawater/seawater.h"
 #include "widgets/glider_ballast_map.h"
 #include "widgets/inputs.h"
+#include "wizard/advice_text.h"
 #include "wizard/demo_state.h"
 #include "wizard/glider_work_order.h"
 #include "wizard/operator_wizard.h"
@@ -234,7 +235,12 @@ TEST_F(GliderSequence, SlocumLogToGramsPerBottleTypedTargetsMatchTheCli) {
   // The bow is nearly full: it cannot take Baird's share, and the page says what core warned.
   EXPECT_LE(oracle["points"][0]["add_g"].get<double>(), 20.0);
   ASSERT_FALSE(oracle["warnings"].empty());
-  EXPECT_NE(find<QLabel>(*wiz, "glider_notes")->text().indexOf(QString::fromStdString(oracle["warnings"][0].get<std::string>()).toHtmlEscaped()), -1)
+  // In the wizard's words (by the message id core gives beside the English).
+  const nlohmann::json& wid = oracle["warnings_ids"][0];
+  EXPECT_EQ(wid["id"].get<std::string>(), "weighing.bottles_not_level");
+  const Message warned(wid["id"].get<std::string>(), oracle["warnings"][0].get<std::string>(),
+                       wid["args"].get<std::vector<std::string>>());
+  EXPECT_NE(find<QLabel>(*wiz, "glider_notes")->text().indexOf(adviceText(warned).toHtmlEscaped()), -1)
       << find<QLabel>(*wiz, "glider_notes")->text().toStdString();
   shot(*wiz, "71_glider_ballast");
   const auto& rects = map->labelRects();

@@ -60,6 +60,13 @@ constexpr Advice kAdvice[] = {
   {"ballast.priorities", QT_TRANSLATE_NOOP("Advice", "Priorities (thesis §5.4): net buoyancy %1 to %2 and never negative, then pitch within ±%3, then roll within ±%4; %5 piece(s) to handle.")},
   {"ballast.after_move", QT_TRANSLATE_NOOP("Advice", "After the move: net buoyancy %1, pitch %2, roll %3.")},
   {"ballast.half_way", QT_TRANSLATE_NOOP("Advice", "Half-way policy: this move aims at about half of the needed change (net buoyancy %1 to %2, pitch %3, roll %4); check the vehicle again and repeat.")},
+  // Weighing checks (core/weighing/weighing_messages.h).
+  {"weighing.sum_mismatch", QT_TRANSLATE_NOOP("Advice", "The four scale readings add up to %1 but the hook reads %2 (tolerance %3): the CG uses the four readings, the mass uses the hook.")},
+  {"weighing.roll_test_h_large", QT_TRANSLATE_NOOP("Advice", "h = %1 is implausibly large for a glider (about 6 mm is usual): check the roll signs and which rail the mass hung on.")},
+  {"weighing.roll_test_spread", QT_TRANSLATE_NOOP("Advice", "The single h values spread by %1 (%2 of the mean): repeat the roll test.")},
+  {"weighing.bottles_not_level", QT_TRANSLATE_NOOP("Advice", "The bottles cannot hold the level split (bow %1, aft %2): the glider will not float level. Move a disk or rail weight.")},
+  {"weighing.bottles_full", QT_TRANSLATE_NOOP("Advice", "The bottles are full: %1 more is needed for neutral, so the glider stays light. Add ballast elsewhere.")},
+  {"weighing.bottles_empty", QT_TRANSLATE_NOOP("Advice", "The bottles are empty: %1 more must come out, so the glider stays HEAVY. Remove a disk or rail weight.")},
   // First mission (core/firstmission/first_mission_messages.h).
   {"first_mission.capsize", QT_TRANSLATE_NOOP("Advice", "The CG is not below the CB with the BG of the vehicle profile: the vehicle would capsize. Check BG in the vehicle profile.")},
   {"first_mission.tank_displaces", QT_TRANSLATE_NOOP("Advice", "In the tank (%1, %2) the glider displaces %3 (%4); at %5 the hull measures %6 and is neutral at %7 in %8 water.")},
