@@ -15,6 +15,7 @@
 #include "firstmission/first_mission_messages.h"
 #include "weighing/weighing_messages.h"
 #include "history/store.h"
+#include "widgets/inputs.h"
 #include "page_walk.h"
 #include "planning/planning_messages.h"
 #include "ui_fixture.h"
@@ -75,34 +76,51 @@ TEST(Advice, NorwegianIsCompleteForEveryId) {
     EXPECT_NE(t, adviceSource(id)) << id.toStdString() << " has no Norwegian";
     EXPECT_EQ(placeholders(t), placeholders(adviceSource(id))) << id.toStdString() << ": " << t.toStdString();
   }
-  // A message as core builds it comes out Norwegian with its numbers.
+  // A message as core builds it comes out Norwegian with its numbers (Norwegian decimal comma).
   const Message m(analysis::msg::kCgYNeedsBg, {"+9.90"});
   EXPECT_EQ(adviceText(m).toStdString(),
             "Kan ikke bestemmes fra denne loggen: en stødig rull gir y = BG tan(rull), og BG (tyngdepunktets høyde under "
             "oppdriftssenteret) kan ikke måles fra loggen. Legg inn BG fra en krengeprøve eller rulletest for denne "
-            "konfigurasjonen (statisk rull +9.90°).");
+            "konfigurasjonen (statisk rull +9,90°).");
   // Sentences the wizard builds in pieces: Norwegian in every piece.
   const Message band("ballast.band_unreachable", "pitch band ...",
                      {"pitch", "0.50°", "", "+0.64°", "piece", "0.6 kg", "", "2.0", "-0.31", "inside"});
   EXPECT_EQ(adviceText(band).toStdString(),
-            "Stampbåndet ±0.50° kan ikke nås med dette vektsettet (i ro); beste er +0.64°; i planflyging ved 2.0 m/s "
-            "stamper det -0.31°, innenfor båndet; et lodd på 0.6 kg ville nådd det.");
+            "Stampbåndet ±0,50° kan ikke nås med dette vektsettet (i ro); beste er +0,64°; i planflyging ved 2,0 m/s "
+            "stamper det -0,31°, innenfor båndet; et lodd på 0,6 kg ville nådd det.");
   for (const char* kind : {"out_of_reach", "none_tried", "none_tried_undecided"}) {
     const Message other("ballast.band_unreachable", "...", {"roll", "0.10°", "", "-0.63°", kind, "0.6 kg", "pitch_ok"});
     const QString s = adviceText(other);
-    EXPECT_TRUE(s.startsWith("Rullbåndet ±0.10° kan ikke nås med dette vektsettet mens stampen")) << s.toStdString();
+    EXPECT_TRUE(s.startsWith("Rullbåndet ±0,10° kan ikke nås med dette vektsettet mens stampen")) << s.toStdString();
     EXPECT_EQ(s.indexOf(" would "), -1) << s.toStdString();
   }
   const Message point("plan.explain_point", "...",
                       {"Aft / port", "", "1 × 4.8 kg and 1 × 1.2 kg", "+6.00 kg", "6.00 kg", "-1.32", "-1.25", "lowers", "x", "back"});
   EXPECT_EQ(adviceText(point).toStdString(),
-            "Aft / port: legg til 1 × 4.8 kg og 1 × 1.2 kg (+6.00 kg), som senker netto oppdrift med 6.00 kg og flytter "
-            "tyngdepunktet 1.32 mm akterover og 1.25 mm mot babord, som flytter tyngdepunktet tilbake mot "
+            "Aft / port: legg til 1 × 4,8 kg og 1 × 1,2 kg (+6,00 kg), som senker netto oppdrift med 6,00 kg og flytter "
+            "tyngdepunktet 1,32 mm akterover og 1,25 mm mot babord, som flytter tyngdepunktet tilbake mot "
             "oppdriftssenteret forut-akter.");
   // The CLI keeps its English, word for word.
   EXPECT_EQ(m, "not identifiable from this log because a steady roll gives y = BG tan(roll) and BG (the CG height below "
                "the CB) cannot be measured from the log: give --bg-mm from an inclining or roll test (static roll "
                "+9.90 deg)");
+}
+
+// Numbers on pages follow the wizard's language (issue 14: "1025,4" typed
+// under nb must not come back as "1025.4" beside it), never with group
+// separators, and go back to the start locale with English.
+TEST(Advice, NumbersFollowTheWizardLanguage) {
+  {
+    Norwegian nb;
+    ASSERT_TRUE(nb.ok);
+    EXPECT_EQ(fixed(1025.4, 1).toStdString(), "1025,4");
+    EXPECT_EQ(signedFixed(0.004, 2).toStdString(), "0,00");
+    EXPECT_EQ(signedFixed(1565.25, 2).toStdString(), "+1565,25");
+    EXPECT_EQ(massText(52.2, false).toStdString(), "52,2 kg");
+    EXPECT_TRUE(significant(4.797e-6, 4).startsWith("4,797")) << significant(4.797e-6, 4).toStdString();
+  }
+  EXPECT_EQ(fixed(1565.2, 1).toStdString(), QLocale().toString(1565.2, 'f', 1).remove(QLocale().groupSeparator()).toStdString());
+  EXPECT_EQ(fixed(-0.001, 2).toStdString(), fixed(0.0, 2).toStdString()) << "never -0.00";
 }
 
 // The post-mission demo under Norwegian: the analysis notes and the

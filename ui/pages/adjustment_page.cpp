@@ -331,7 +331,7 @@ void AdjustmentPage::showPlan() {
   for (const auto& e : p.explanations) lines << adviceText(e).toHtmlEscaped();
   QStringList pts;
   for (const auto& r : p.at_points) {
-    pts << tr("%1 m %2 kg").arg(r.water.depth_m, 0, 'f', 0).arg(signedFixed(r.net_after_kg, nd));
+    pts << tr("%1 m %2 kg").arg(fixed(r.water.depth_m, 0)).arg(signedFixed(r.net_after_kg, nd));
   }
   lines << (p.safe ? tr("Safety: net buoyancy stays above the margin %1 kg (%2) at every planned depth: %3.")
                    : tr("<span style='color:#b00020'>Not safe: net buoyancy falls below the margin %1 kg (%2) at a "

@@ -140,12 +140,12 @@ void CraneWeighingPage::updateSumCheck() {
   const double diff = parts - total_->value();
   const double tol = state_.crane.weighing.sum_tolerance_kg;
   sum_ok_ = total_->value() > 0 && std::abs(diff) <= 5 * tol;
-  QString text = tr("Parts add up to %1 kg (%2 kg against the hook)").arg(parts, 0, 'f', 1).arg(diff, 0, 'f', 1);
+  QString text = tr("Parts add up to %1 kg (%2 kg against the hook)").arg(fixed(parts, 1)).arg(fixed(diff, 1));
   if (std::abs(diff) <= tol) {
     sum_check_->setStyleSheet("color: #1b5e20;");
   } else if (sum_ok_) {
     sum_check_->setStyleSheet("color: #8a6d00;");
-    text += tr(": more than %1 kg, check the readings").arg(tol, 0, 'f', 1);
+    text += tr(": more than %1 kg, check the readings").arg(fixed(tol, 1));
   } else {
     sum_check_->setStyleSheet("color: #b00020;");
     text += tr(": re-read the scales");

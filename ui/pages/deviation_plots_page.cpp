@@ -313,7 +313,7 @@ void DeviationPlotsPage::showTraces(std::array<std::array<PlotTrace, 2>, 3> trac
   info_->setText(tr("%1: %2 samples in the three charts over %3 min.")
                      .arg(QString::fromStdString(state_.log_file).section('/', -1))
                      .arg(n)
-                     .arg(t_max_ - t_min_, 0, 'f', 0));
+                     .arg(fixed(t_max_ - t_min_, 0)));
   cross_.reset();
   setCrosshair(std::nullopt);
   resetXRange();

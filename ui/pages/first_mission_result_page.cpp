@@ -151,16 +151,16 @@ void FirstMissionResultPage::showReport(const FirstMissionReport& r) {
   const bool g = state_.isGlider();
   const Eigen::Vector3d d = r.cg_m - r.cb_m;
   before_->setStyleSheet(QString());
-  const QString net = g ? tr("%1 g").arg(r.net_buoyancy_kg * 1000.0, 0, 'f', 1)
-                        : tr("%1 kg").arg(r.net_buoyancy_kg, 0, 'f', 2);
+  const QString net = g ? tr("%1 g").arg(fixed(r.net_buoyancy_kg * 1000.0, 1))
+                        : tr("%1 kg").arg(fixed(r.net_buoyancy_kg, 2));
   const QString state = std::abs(r.net_buoyancy_kg) < 5e-4 ? tr("neutral")
                         : r.net_buoyancy_kg > 0            ? tr("too light")
                                                            : tr("too heavy");
   before_->setText(tr("Weighed %1 kg; buoyancy %2 kg in %3 kg/m³ water → net buoyancy %4 (%5). "
                       "CG − CB: x %6 mm, y %7 mm; static pitch %8°, roll %9°.")
-                       .arg(r.weight_kg, 0, 'f', g ? 3 : 1)
-                       .arg(r.buoyancy_kg, 0, 'f', g ? 3 : 1)
-                       .arg(r.density_kgm3, 0, 'f', 2)
+                       .arg(fixed(r.weight_kg, g ? 3 : 1))
+                       .arg(fixed(r.buoyancy_kg, g ? 3 : 1))
+                       .arg(fixed(r.density_kgm3, 2))
                        .arg(net)
                        .arg(state)
                        .arg(fixed(units::mToMm(d.x()), 1))
@@ -184,18 +184,18 @@ void FirstMissionResultPage::showReport(const FirstMissionReport& r) {
                      r.predicted.net_buoyancy_kg <= spec.net_buoyancy_max_kg + 1e-9;
   predicted_->setText(tr("After the change: net buoyancy %1 %2 (band %3..%4), pitch %5° %6 (±%7), "
                          "roll %8° %9 (±%10).")
-                          .arg(g ? tr("%1 g").arg(r.predicted.net_buoyancy_kg * 1000.0, 0, 'f', 1)
-                                 : tr("%1 kg").arg(r.predicted.net_buoyancy_kg, 0, 'f', 2))
+                          .arg(g ? tr("%1 g").arg(fixed(r.predicted.net_buoyancy_kg * 1000.0, 1))
+                                 : tr("%1 kg").arg(fixed(r.predicted.net_buoyancy_kg, 2)))
                           .arg(band(nb_ok))
-                          .arg(g ? spec.net_buoyancy_min_kg * 1000.0 : spec.net_buoyancy_min_kg, 0, 'f', g ? 0 : 1)
-                          .arg(g ? tr("%1 g").arg(spec.net_buoyancy_max_kg * 1000.0, 0, 'f', 0)
-                                 : tr("%1 kg").arg(spec.net_buoyancy_max_kg, 0, 'f', 1))
+                          .arg(fixed(g ? spec.net_buoyancy_min_kg * 1000.0 : spec.net_buoyancy_min_kg, g ? 0 : 1))
+                          .arg(g ? tr("%1 g").arg(fixed(spec.net_buoyancy_max_kg * 1000.0, 0))
+                                 : tr("%1 kg").arg(fixed(spec.net_buoyancy_max_kg, 1)))
                           .arg(fixed(r.predicted.pitch_deg, 2))
                           .arg(band(std::abs(r.predicted.pitch_deg) <= spec.pitch_tolerance_deg))
-                          .arg(spec.pitch_tolerance_deg, 0, 'f', 1)
+                          .arg(fixed(spec.pitch_tolerance_deg, 1))
                           .arg(fixed(r.predicted.roll_deg, 2))
                           .arg(band(std::abs(r.predicted.roll_deg) <= spec.roll_tolerance_deg))
-                          .arg(spec.roll_tolerance_deg, 0, 'f', 1));
+                          .arg(fixed(spec.roll_tolerance_deg, 1)));
   QStringList msgs;
   for (const auto& w : r.warnings) msgs << tr("⚠ %1").arg(adviceText(w));
   for (const auto& n : r.notes) msgs << adviceText(n);

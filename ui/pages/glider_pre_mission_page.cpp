@@ -236,10 +236,10 @@ void GliderPreMissionPage::showLogAnswer() {
     {
       QString line = tr("%1 = %2 ± %3 %4 (profile %5)")
                          .arg(termLabel(m.id))
-                         .arg(m.value, 0, 'g', 4)
-                         .arg(m.sigma, 0, 'g', 2)
+                         .arg(significant(m.value, 4))
+                         .arg(significant(m.sigma, 2))
                          .arg(q(m.unit))
-                         .arg(m.profile_value, 0, 'g', 4);
+                         .arg(significant(m.profile_value, 4));
       // A term the log preferred over a rival: say so, the sigma above carries it.
       for (const auto& rv : m.rivals) line += " " + tr("(or %1: this log cannot tell them apart for certain)").arg(termLabel(rv.id));
       used << line;
@@ -271,14 +271,14 @@ void GliderPreMissionPage::update() {
     QString basis = q(t.basis);
     if (kind_log_->isChecked()) basis = tr("default: %1").arg(basis);
     target_->setText(tr("Target: %1 kg/m³ at %2 dbar, %3 °C (%4).")
-                         .arg(t.density_kgm3, 0, 'f', 2)
-                         .arg(t.pressure_dbar, 0, 'f', 0)
-                         .arg(t.temperature_degC, 0, 'f', 2)
+                         .arg(fixed(t.density_kgm3, 2))
+                         .arg(fixed(t.pressure_dbar, 0))
+                         .arg(fixed(t.temperature_degC, 2))
                          .arg(basis));
     const double add = number(answer_.plan, "mass_to_add_g"), sigma = number(answer_.plan, "mass_to_add_sigma_g");
     result_->setText(tr("For neutral with the pump at zero in this water: add <b>%1</b>%2. Next: where the grams go.")
                          .arg(grams(add, sigma))
-                         .arg(add < 0 ? tr(" (remove %1 g)").arg(-add, 0, 'f', 0) : QString()));
+                         .arg(add < 0 ? tr(" (remove %1 g)").arg(fixed(-add, 0)) : QString()));
   } else {
     target_->clear();
     result_->clear();

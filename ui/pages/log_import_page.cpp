@@ -364,7 +364,7 @@ void LogImportPage::showSummary() {
           .arg(QFileInfo(q(state_.log_file)).fileName().toHtmlEscaped(), q(state_.log_format).toHtmlEscaped())
           .arg(r.rows_kept)
           .arg(log.channels.size())
-          .arg(log.duration() / 3600.0, 0, 'f', 2)
+          .arg(fixed(log.duration() / 3600.0, 2))
           .arg(r.rows_skipped)
           .arg(r.rows_merged)
           .arg(r.cells_blanked)

@@ -40,7 +40,7 @@ namespace {
 
 QString q(const std::string& s) { return QString::fromStdString(s); }
 // Term values span 1e-6 (compressibility per dbar) to tens: significant digits.
-QString sig(double v, int digits) { return QString::number(v, 'g', digits); }
+QString sig(double v, int digits) { return significant(v, digits); }
 
 constexpr int kOverlayBuckets = 900;
 

@@ -253,10 +253,10 @@ void PreMissionPage::showBasis() {
   if (basis_->start.physical) {
     text = tr("Net buoyancy <b>%1</b> (%2) in %3 kg/m³ water at %4 m (%5 °C, %6 PSU).")
                .arg(EstimateText::valueSigma(true, e.net_buoyancy_kg, e.net_buoyancy_sigma_kg, g ? 3 : 2, tr(" kg")), state)
-               .arg(e.water.density_kgm3, 0, 'f', 2)
-               .arg(e.depth_m, 0, 'f', 0)
-               .arg(e.water.temperature_degC, 0, 'f', 2)
-               .arg(e.salinity_psu, 0, 'f', 2);
+               .arg(fixed(e.water.density_kgm3, 2))
+               .arg(fixed(e.depth_m, 0))
+               .arg(fixed(e.water.temperature_degC, 2))
+               .arg(fixed(e.salinity_psu, 2));
   } else {
     text = tr("No net buoyancy was measured: the recorded weight against the buoyancy gives <b>%1 kg</b> (%2), "
               "and the classic table works from the deviations.")
@@ -266,7 +266,7 @@ void PreMissionPage::showBasis() {
     return EstimateText::of(v ? std::optional<double>(units::mToMm(*v)) : std::nullopt, units::mToMm(sigma), 1, tr(" mm"));
   };
   text += " " + tr("CG − CB: x %1, y %2").arg(cg(e.cg_x_m, e.cg_x_sigma_m), cg(e.cg_y_m, e.cg_y_sigma_m));
-  if (e.cg_y_basis == "cruise" && e.cg_y_m) text += tr(" (y that levels it at %1 rpm)").arg(e.cruise_rpm, 0, 'f', 0);
+  if (e.cg_y_basis == "cruise" && e.cg_y_m) text += tr(" (y that levels it at %1 rpm)").arg(fixed(e.cruise_rpm, 0));
   text += ".";
   // Which estimate: this session's (analysis, or with the accepted
   // model-check terms) or the history's.
@@ -334,8 +334,8 @@ std::optional<PreMissionPlan> PreMissionPage::computePlan(QString& error) {
   if (deepest_->value() < depth_->value()) {
     error = tr("Deepest depth: %1 m is shallower than the operating depth (%2 m); enter the deepest depth the "
                "mission goes to, at least %2 m.")
-                .arg(deepest_->value(), 0, 'f', 1)
-                .arg(depth_->value(), 0, 'f', 1);
+                .arg(fixed(deepest_->value(), 1))
+                .arg(fixed(depth_->value(), 1));
     return std::nullopt;
   }
   if (!temperatureEntered()) {
@@ -358,7 +358,7 @@ void PreMissionPage::updatePreview() {
   if (temperatureEntered()) {
     try {
       const WaterState ws = resolveWater(*state_.next_water);
-      density_->setText(tr("In-situ density %1 kg/m³").arg(ws.density_kgm3, 0, 'f', 2));
+      density_->setText(tr("In-situ density %1 kg/m³").arg(fixed(ws.density_kgm3, 2)));
     } catch (const InputError& e) {
       water_error_->setText(q(e.what()));
     }
@@ -383,7 +383,7 @@ void PreMissionPage::updatePreview() {
                                                         plan->pitch_sigma_deg, 2, tr("°")),
                                EstimateText::valueSigma(EstimateText::rollKnown(*plan), plan->predicted.roll_deg,
                                                         plan->roll_sigma_deg, 2, tr("°")))
-                          .arg(plan->at_points.front().water.depth_m, 0, 'f', 0));
+                          .arg(fixed(plan->at_points.front().water.depth_m, 0)));
   } else {
     preview_->clear();
   }

@@ -271,17 +271,17 @@ void RollTestPage::updatePreview() {
     const auto& d = r.details;
     if (d.contains("roll_test")) {
       QStringList each;
-      for (const auto& h : d["roll_test"]["h_each_mm"]) each << QString::number(h.get<double>(), 'f', 2);
+      for (const auto& h : d["roll_test"]["h_each_mm"]) each << fixed(h.get<double>(), 2);
       const double y = jnum(d, {"roll_test", "cg_y_mm"});
       result_->setText(tr("h-arm <b>%1 mm</b> (each mass: %2 mm; spread %3 mm). G sits <b>%4 mm to %5</b> of the "
                           "hull axis and %6 mm below it. Target h-arm %7 mm.")
-                           .arg(jnum(d, {"roll_test", "h_mm"}), 0, 'f', 2)
+                           .arg(fixed(jnum(d, {"roll_test", "h_mm"}), 2))
                            .arg(each.join(", "))
-                           .arg(jnum(d, {"roll_test", "spread_mm"}), 0, 'f', 2)
-                           .arg(std::abs(y), 0, 'f', 2)
+                           .arg(fixed(jnum(d, {"roll_test", "spread_mm"}), 2))
+                           .arg(fixed(std::abs(y), 2))
                            .arg(y >= 0 ? tr("starboard") : tr("port"))
-                           .arg(jnum(d, {"roll_test", "cg_z_mm"}), 0, 'f', 2)
-                           .arg(jnum(d, {"h_arm", "target_mm"}), 0, 'f', 2));
+                           .arg(fixed(jnum(d, {"roll_test", "cg_z_mm"}), 2))
+                           .arg(fixed(jnum(d, {"h_arm", "target_mm"}), 2)));
     } else {
       result_->setText(tr("No roll test: the result will use the profile's CG height."));
     }

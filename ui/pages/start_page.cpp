@@ -308,7 +308,7 @@ void StartPage::showSelection() {
     if (st->last_temperature && st->last_temperature->temperature_degC && st->temperature_age) {
       const long days = static_cast<long>(st->temperature_age->count() / 86400);
       const QString base = tr("Water temperature %1 °C measured %2 (%3 days ago)")
-                               .arg(*st->last_temperature->temperature_degC, 0, 'f', 1)
+                               .arg(fixed(*st->last_temperature->temperature_degC, 1))
                                .arg(dateOf(st->last_temperature->measured_at))
                                .arg(days);
       if (st->temperature_stale) {

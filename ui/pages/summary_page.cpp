@@ -102,9 +102,9 @@ void SummaryPage::showSummary() {
   }
   const PlannedPointResult& op = p.at_points.front();
   items << tr("the next mission's water: %1 m, %2 °C, %3 PSU (%4)")
-               .arg(op.water.depth_m, 0, 'f', 0)
-               .arg(op.water.temperature_degC, 0, 'f', 2)
-               .arg(op.water.salinity_psu, 0, 'f', 2)
+               .arg(fixed(op.water.depth_m, 0))
+               .arg(fixed(op.water.temperature_degC, 2))
+               .arg(fixed(op.water.salinity_psu, 2))
                .arg(state_.next_water_source == "operator" ? tr("entered") : tr("last mission's CTD"));
   items << tr("the plan (%1 policy) as the accepted recommendation, from %2")
                .arg(q(toString(p.policy)), q(basis_->analysis_name).toHtmlEscaped());

@@ -169,14 +169,14 @@ void TankWeighingPage::updatePreview() {
         tr("In the tank it displaces <b>%1 kg</b>; in the target water it is neutral at <b>%2 kg</b>. "
            "It weighs %3 kg, so it is <b>%4 %5</b>.<br>Tank step: %6.<br>"
            "With that done, the bow scale should read <b>%7 g</b> and the aft scale <b>%8 g</b>.")
-            .arg(jnum(d, {"tank", "tank_neutral_mass_kg"}), 0, 'f', 3)
-            .arg(jnum(d, {"tank", "target_neutral_mass_kg"}), 0, 'f', 3)
-            .arg(r.weight_kg, 0, 'f', 3)
-            .arg(std::abs(r.net_buoyancy_kg) * 1000.0, 0, 'f', 1)
+            .arg(fixed(jnum(d, {"tank", "tank_neutral_mass_kg"}), 3))
+            .arg(fixed(jnum(d, {"tank", "target_neutral_mass_kg"}), 3))
+            .arg(fixed(r.weight_kg, 3))
+            .arg(fixed(std::abs(r.net_buoyancy_kg) * 1000.0, 1))
             .arg(r.net_buoyancy_kg < 0 ? tr("g heavy") : tr("g light"))
             .arg(changes.join(", ").toHtmlEscaped())
-            .arg(jnum(d, {"expected_tank_readings_g", "bow"}), 0, 'f', 0)
-            .arg(jnum(d, {"expected_tank_readings_g", "aft"}), 0, 'f', 0));
+            .arg(fixed(jnum(d, {"expected_tank_readings_g", "bow"}), 0))
+            .arg(fixed(jnum(d, {"expected_tank_readings_g", "aft"}), 0)));
     error_->clear();
     ok_ = true;
   } catch (const InputError& e) {

@@ -120,8 +120,8 @@ void VehiclePage::showProfile() {
     const VehicleProfile v = VehicleCatalog(state_.vehicles_dir).load(vehicle_->currentData().toString().toStdString());
     summary_->setText(tr("%1: %2 kg in air, hull volume %3 m³, %4 adjustment points; weighed by %5.")
                           .arg(QString::fromStdString(v.name))
-                          .arg(v.mass_kg, 0, 'f', 1)
-                          .arg(v.hull.volume_m3, 0, 'f', 4)
+                          .arg(fixed(v.mass_kg, 1))
+                          .arg(fixed(v.hull.volume_m3, 4))
                           .arg(v.points.size())
                           .arg(v.kind == "glider" ? tr("the tank method (spring scales)") : tr("crane scales")));
     shown_kind_ = v.kind;

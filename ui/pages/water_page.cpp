@@ -79,7 +79,7 @@ void WaterPage::updateDensity() {
   PlannedWater w{temperature_->value(), salinity_->value(), depth_->value(), latitude_->value()};
   try {
     const WaterState s = resolveWater(w);
-    density_->setText(tr("%1 kg/m³ at %2 dbar").arg(s.density_kgm3, 0, 'f', 3).arg(s.pressure_dbar, 0, 'f', 1));
+    density_->setText(tr("%1 kg/m³ at %2 dbar").arg(fixed(s.density_kgm3, 3)).arg(fixed(s.pressure_dbar, 1)));
     error_->clear();
   } catch (const InputError& e) {
     density_->clear();

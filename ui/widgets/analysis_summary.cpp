@@ -107,7 +107,7 @@ void AnalysisSummary::show(const analysis::AnalysisReport* report, bool glider, 
   if (r.mass_to_add_g.known && std::isfinite(r.mass_to_add_g.value))
     net += tr("; add %1 for neutral at %2 kg/m³")
                .arg(estimateText(r.mass_to_add_g, 0, tr(" g")))
-               .arg(r.target_density_kgm3, 0, 'f', 2);
+               .arg(fixed(r.target_density_kgm3, 2));
   net_->setText(net);
   if (!r.cg_x_mm.known && !r.cg_y_mm.known)
     cg_->setText(tr("CG − CB: <b>%1</b> (see the notes)").arg(EstimateText::notKnown()));

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 
+#include "widgets/inputs.h"
+
 namespace auv::ui {
 namespace {
 
@@ -12,7 +14,7 @@ namespace {
 // never an exponent for a number with more integer digits than that.
 QString sig(double v, int digits) {
   if (std::abs(v) >= 1.0) digits = std::max(digits, static_cast<int>(std::floor(std::log10(std::abs(v)))) + 1);
-  return QString::number(v, 'g', digits);
+  return significant(v, digits);
 }
 
 // The unit as a technician reads it; BG is reported in m and shown in mm.
@@ -165,8 +167,8 @@ QStringList CalibrationTable::manoeuvreLines(const nlohmann::json& m) {
   if (m.contains("expected_sigma") && m["expected_sigma"].is_object()) {
     const auto& e = m["expected_sigma"];
     QStringList parts;
-    if (std::isfinite(num(e, "net_buoyancy_kg"))) parts << tr("net buoyancy ± %1 kg").arg(num(e, "net_buoyancy_kg"), 0, 'f', 2);
-    if (std::isfinite(num(e, "cg_x_mm"))) parts << tr("CG x ± %1 mm").arg(num(e, "cg_x_mm"), 0, 'f', 1);
+    if (std::isfinite(num(e, "net_buoyancy_kg"))) parts << tr("net buoyancy ± %1 kg").arg(fixed(num(e, "net_buoyancy_kg"), 2));
+    if (std::isfinite(num(e, "cg_x_mm"))) parts << tr("CG x ± %1 mm").arg(fixed(num(e, "cg_x_mm"), 1));
     if (!parts.isEmpty()) out << tr("Expected afterwards (1 σ): %1").arg(parts.join(", "));
   }
   return out;

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "widgets/inputs.h"
+
 namespace auv::ui {
 
 CraneSideView::CraneSideView(QWidget* parent) : QWidget(parent) {
@@ -75,7 +77,7 @@ void CraneSideView::paintEvent(QPaintEvent*) {
   p.drawLine(QPointF(std::min(xa, xf), bar_y), QPointF(std::max(xa, xf), bar_y));
   p.setPen(QPen(ink, 1.5));
   p.drawEllipse(hook + QPointF(0, -5), 5, 5);
-  p.drawText(QPointF(cx + 12, hook_y), tr("hook: %1 kg").arg(data_.total_kg, 0, 'f', 1));
+  p.drawText(QPointF(cx + 12, hook_y), tr("hook: %1 kg").arg(fixed(data_.total_kg, 1)));
 
   struct Station {
     double x;
@@ -94,8 +96,8 @@ void CraneSideView::paintEvent(QPaintEvent*) {
     p.drawRoundedRect(box, 3, 3);
     p.setBrush(Qt::NoBrush);
     // Readings beside the scale, on the side away from the hook.
-    const QString ta = tr("%1 %2 kg").arg(tr(s.a)).arg(s.ra, 0, 'f', 1);
-    const QString tb = tr("%1 %2 kg").arg(tr(s.b)).arg(s.rb, 0, 'f', 1);
+    const QString ta = tr("%1 %2 kg").arg(tr(s.a)).arg(fixed(s.ra, 1));
+    const QString tb = tr("%1 %2 kg").arg(tr(s.b)).arg(fixed(s.rb, 1));
     const double w = std::max(fm.horizontalAdvance(ta), fm.horizontalAdvance(tb)) + 4;
     const bool right = s.x >= cx;
     const double tx = right ? box.right() + 6 : box.left() - 6 - w;
@@ -108,8 +110,8 @@ void CraneSideView::paintEvent(QPaintEvent*) {
   const QString stations_text =
       data_.rope_fore_x_m > data_.rope_aft_x_m
           ? tr("Ropes at x = %1 m (fore) and %2 m (aft); starboard and port scales hang one behind the other.")
-                .arg(data_.rope_fore_x_m, 0, 'f', 3)
-                .arg(data_.rope_aft_x_m, 0, 'f', 3)
+                .arg(fixed(data_.rope_fore_x_m, 3))
+                .arg(fixed(data_.rope_aft_x_m, 3))
           : tr("Enter where the ropes are: the fore rope's x must be forward of (greater than) the aft rope's.");
   p.setPen(ink);
   p.drawText(QRectF(8, height() - line - 4, width() - 16, line), Qt::AlignLeft | Qt::AlignVCenter,

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "widgets/inputs.h"
+
 namespace auv::ui {
 namespace {
 
@@ -17,7 +19,7 @@ double num(const nlohmann::json& j, const char* k, double fallback) {
 
 QString gramsText(double g) {
   const double r = std::round(g);
-  return r > 0 ? QString("+%1 g").arg(r, 0, 'f', 0) : QString("%1 g").arg(r == 0.0 ? 0.0 : r, 0, 'f', 0);
+  return r > 0 ? QString("+%1 g").arg(fixed(r, 0)) : QString("%1 g").arg(fixed(r == 0.0 ? 0.0 : r, 0));
 }
 
 QColor changeColour(double g) {
@@ -103,7 +105,7 @@ void drawView(QPainter& p, const QRectF& area, const GliderMapModel& m, bool sid
     p.drawEllipse(at, r, r);
     p.setBrush(Qt::NoBrush);
     QString text = QString("%1: %2").arg(pl.label, gramsText(pl.add_g));
-    if (pl.after_g >= 0) text += QString(" (→ %1 g)").arg(pl.after_g, 0, 'f', 0);
+    if (pl.after_g >= 0) text += QString(" (→ %1 g)").arg(fixed(pl.after_g, 0));
     const double w = fm.horizontalAdvance(text) + 6;
     Band& b = c < 0 ? up : down;
     const QRectF rect = b.place(at.x(), w, area);
@@ -146,11 +148,11 @@ GliderMapModel makeGliderMapModel(const VehicleProfile& v, const nlohmann::json&
       pl.z_m = v.points.front().position_m.z();
       m.places.push_back(pl);
     }
-    m.note = GliderBallastMap::tr("$C_VBD %1 → %2").arg(num(s, "C_VBD_old", 0), 0, 'f', 0).arg(num(s, "C_VBD_new", 0), 0, 'f', 0);
+    m.note = GliderBallastMap::tr("$C_VBD %1 → %2").arg(fixed(num(s, "C_VBD_old", 0), 0)).arg(fixed(num(s, "C_VBD_new", 0), 0));
     const nlohmann::json sg = v.sections.contains("seaglider") ? v.sections["seaglider"] : nlohmann::json::object();
     const double c = num(s, "C_PITCH_new", NAN);
     if (c >= num(sg, "PITCH_MIN", -1e9) && c <= num(sg, "PITCH_MAX", 1e9))  // else the steps say why it stays
-      m.note += GliderBallastMap::tr(", $C_PITCH %1 → %2").arg(num(s, "C_PITCH_old", 0), 0, 'f', 0).arg(num(s, "C_PITCH_new", 0), 0, 'f', 0);
+      m.note += GliderBallastMap::tr(", $C_PITCH %1 → %2").arg(fixed(num(s, "C_PITCH_old", 0), 0)).arg(fixed(num(s, "C_PITCH_new", 0), 0));
   } else if (m.places.empty()) {
     m.note = GliderBallastMap::tr("The log does not tell where the grams go on this glider (see the notes).");
   }

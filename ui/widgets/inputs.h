@@ -4,6 +4,7 @@
 // a 32 px minimum height for gloved hands on a dockside laptop.
 #include <QFrame>
 #include <QLabel>
+#include <QLocale>
 #include <QScrollArea>
 #include <QString>
 #include <cmath>
@@ -51,6 +52,33 @@ inline QLabel* makeErrorLabel(const QString& name = QStringLiteral("error")) {
   return l;
 }
 
+
+// Numbers on pages in the wizard's language (translations.h sets the
+// default locale with the translation: "1025,4" under --lang nb), without
+// group separators (a technician types 1565.2, not 1,565.2). Files a
+// program reads (CSV export) keep '.'.
+inline QLocale displayLocale() {
+  QLocale l;
+  l.setNumberOptions(l.numberOptions() | QLocale::OmitGroupSeparator);
+  return l;
+}
+
+// A number with fixed decimals that never shows "-0.00".
+inline QString fixed(double v, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  if (std::round(v * scale) == 0.0) v = 0.0;
+  return displayLocale().toString(v, 'f', decimals);
+}
+
+// Significant digits ('g'), for fitted constants of any size.
+inline QString significant(double v, int digits) { return displayLocale().toString(v, 'g', digits); }
+
+// The same with a "+" on positive values (net buoyancy, attitudes).
+inline QString signedFixed(double v, int decimals) {
+  const bool positive = std::round(v * std::pow(10.0, decimals)) > 0.0;
+  return (positive ? QStringLiteral("+") : QString()) + fixed(v, decimals);
+}
+
 // Glider ballast is set to the gram, AUV kit pieces are kilograms: show
 // each in the unit the technician works in.
 inline QString massText(double kg, bool grams, bool sign = false) {
@@ -58,21 +86,8 @@ inline QString massText(double kg, bool grams, bool sign = false) {
   const double shown = grams ? std::round(kg * 1000.0) : std::round(kg * 10.0) / 10.0;
   const double v = shown == 0.0 ? 0.0 : shown;
   const QString plus = sign && v > 0 ? QStringLiteral("+") : QString();
-  if (grams) return QStringLiteral("%1%2 g").arg(plus).arg(v, 0, 'f', 0);
-  return QStringLiteral("%1%2 kg").arg(plus).arg(v, 0, 'f', 1);
-}
-
-// A number with fixed decimals that never shows "-0.00".
-inline QString fixed(double v, int decimals) {
-  const double scale = std::pow(10.0, decimals);
-  if (std::round(v * scale) == 0.0) v = 0.0;
-  return QString::number(v, 'f', decimals);
-}
-
-// The same with a "+" on positive values (net buoyancy, attitudes).
-inline QString signedFixed(double v, int decimals) {
-  const QString t = fixed(v, decimals);
-  return (t.toDouble() > 0 ? QStringLiteral("+") : QString()) + t;
+  if (grams) return QStringLiteral("%1%2 g").arg(plus, fixed(v, 0));
+  return QStringLiteral("%1%2 kg").arg(plus, fixed(v, 1));
 }
 
 }  // namespace auv::ui

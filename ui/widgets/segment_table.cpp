@@ -58,7 +58,7 @@ void SegmentTable::show(const analysis::AnalysisReport* report, bool glider) {
     ++r;
     ranges_.push_back({s.start_s / 60.0, s.end_s / 60.0});
     const QString cells[5] = {QString::number(r + 1),
-                              QStringLiteral("%1–%2").arg(s.start_s / 60.0, 0, 'f', 1).arg(s.end_s / 60.0, 0, 'f', 1),
+                              QStringLiteral("%1–%2").arg(fixed(s.start_s / 60.0, 1)).arg(fixed(s.end_s / 60.0, 1)),
                               g ? cellText(s.depth_m, NAN, 1) : cellText(s.depth_error_m, s.depth_error_ci95_m, 2),
                               g ? cellText(s.pitch_deg, NAN, 1) : cellText(s.pitch_error_deg, s.pitch_error_ci95_deg, 2),
                               cellText(s.roll_deg, s.roll_ci95_deg, 2)};

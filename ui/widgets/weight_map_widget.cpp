@@ -114,9 +114,9 @@ WeightMapLayout drawWeightMap(QPainter& p, const QRectF& area, const WeightMapMo
     const double after = pt.installed_kg + pt.change_kg;
     // installed_kg NaN: what the place holds is not known (a glider's bottles).
     const QString amounts = !std::isfinite(pt.installed_kg) ? QString()
-                          : g ? QString("%1 → %2").arg(std::round(pt.installed_kg * 1000.0), 0, 'f', 0)
-                                    .arg(std::round(after * 1000.0), 0, 'f', 0)
-                              : QString("%1 → %2").arg(pt.installed_kg, 0, 'f', 1).arg(after, 0, 'f', 1);
+                          : g ? QString("%1 → %2").arg(fixed(std::round(pt.installed_kg * 1000.0), 0))
+                                    .arg(fixed(std::round(after * 1000.0), 0))
+                              : QString("%1 → %2").arg(fixed(pt.installed_kg, 1)).arg(fixed(after, 1));
     LabelSlot& l = labels[i];
     l.text = amounts.isEmpty() ? QString("%1: %2").arg(QString::fromStdString(pt.label), massText(pt.change_kg, g, true))
                                : QString("%1: %2 (%3)").arg(QString::fromStdString(pt.label), massText(pt.change_kg, g, true), amounts);

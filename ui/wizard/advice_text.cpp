@@ -1,7 +1,10 @@
 #include "wizard/advice_text.h"
 
+#include "widgets/inputs.h"
+
 #include <QCoreApplication>
 #include <QHash>
+#include <QRegularExpression>
 #include <cmath>
 
 namespace auv::ui {
@@ -174,9 +177,18 @@ const QHash<QString, const char*>& table() {
   return t;
 }
 
+// Core formats its numbers with '.'; in the wizard's language they read
+// as the pages do ("+9,90°" under nb).
+QString localNumbers(QString s) {
+  const QString dp = displayLocale().decimalPoint();
+  if (dp == QStringLiteral(".")) return s;
+  static const QRegularExpression re(QStringLiteral("(\\d)\\.(\\d)"));
+  return s.replace(re, QStringLiteral("\\1") + dp + QStringLiteral("\\2"));
+}
+
 QString word(const std::string& arg) {
   const QByteArray utf8 = QByteArray::fromStdString(arg);
-  return QCoreApplication::translate("AdviceWord", utf8.constData());
+  return localNumbers(QCoreApplication::translate("AdviceWord", utf8.constData()));
 }
 
 QString fill(QString text, const std::vector<std::string>& args) {
@@ -202,7 +214,7 @@ QString fill(QString text, const std::vector<std::string>& args) {
 // lowers/raises, x/y, back/balanced (core/planning/planning_messages.h).
 QString explainPoint(const std::vector<std::string>& a) {
   if (a.size() < 10) return {};
-  auto q = [](const std::string& s) { return QString::fromStdString(s); };
+  auto q = [](const std::string& s) { return localNumbers(QString::fromStdString(s)); };
   const QString and_ = QCoreApplication::translate("Advice", " and ");
   const QString rem = q(a[1]).replace(" and ", and_), add = q(a[2]).replace(" and ", and_);
   QString pieces;
@@ -212,13 +224,13 @@ QString explainPoint(const std::vector<std::string>& a) {
     pieces = QCoreApplication::translate("Advice", "remove %1").arg(rem);
   else
     pieces = QCoreApplication::translate("Advice", "add %1").arg(add);
-  const double x = q(a[5]).toDouble(), y = q(a[6]).toDouble();
+  const double x = QString::fromStdString(a[5]).toDouble(), y = QString::fromStdString(a[6]).toDouble();  // core writes "."
   const QString xs = (x >= 0 ? QCoreApplication::translate("Advice", "%1 mm forward")
                              : QCoreApplication::translate("Advice", "%1 mm aft"))
-                         .arg(QString::number(std::abs(x), 'f', 2));
+                         .arg(fixed(std::abs(x), 2));
   const QString ys = (y >= 0 ? QCoreApplication::translate("Advice", "%1 mm to starboard")
                              : QCoreApplication::translate("Advice", "%1 mm to port"))
-                         .arg(QString::number(std::abs(y), 'f', 2));
+                         .arg(fixed(std::abs(y), 2));
   const bool back = a[9] == "back", along_x = a[8] == "x";
   const char* tail = along_x ? (back ? QT_TRANSLATE_NOOP("Advice", "bringing the CG back towards the CB fore-aft")
                                      : QT_TRANSLATE_NOOP("Advice", "balanced by the other points' fore-aft shares"))
@@ -236,7 +248,7 @@ QString explainPoint(const std::vector<std::string>& a) {
 // pitch, "inside"/"outside" (core/ballast/ballast_messages.h).
 QString bandUnreachable(const std::vector<std::string>& a) {
   if (a.size() < 7) return {};
-  auto q = [](const std::string& s) { return QString::fromStdString(s); };
+  auto q = [](const std::string& s) { return localNumbers(QString::fromStdString(s)); };
   QString s;
   if (a[0] == "net buoyancy")
     s = QCoreApplication::translate("Advice", "The net buoyancy band %1 to %2 cannot be reached with this kit; best %3").arg(q(a[1]), q(a[2]), q(a[3]));
@@ -266,7 +278,7 @@ QString bandUnreachable(const std::vector<std::string>& a) {
 // removals, then the pieces, removals first (core/ballast/solution_text.cpp).
 QString pointText(const std::vector<std::string>& a) {
   if (a.size() < 7) return {};
-  auto q = [](const std::string& s) { return QString::fromStdString(s); };
+  auto q = [](const std::string& s) { return localNumbers(QString::fromStdString(s)); };
   const std::size_t n_remove = std::min<std::size_t>(std::stoul(a[5]), a.size() - 6);
   auto joined = [&](std::size_t from, std::size_t to) {
     QString out;
@@ -292,7 +304,7 @@ QString pointText(const std::vector<std::string>& a) {
 // the other phases (core/discrepancy/check_messages.h).
 QString largestDuring(const std::vector<std::string>& a) {
   if (a.size() < 4) return {};
-  auto q = [](const std::string& s) { return QString::fromStdString(s); };
+  auto q = [](const std::string& s) { return localNumbers(QString::fromStdString(s)); };
   QString s = QCoreApplication::translate("Advice", "%1 is largest during %2: mean %3 %4")
                   .arg(word(a[0]), word(a[1]), q(a[2]), q(a[3]));
   QStringList others;

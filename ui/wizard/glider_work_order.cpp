@@ -43,12 +43,12 @@ void slocumSteps(const nlohmann::json& p, GliderInstructions& out) {
     out.steps << (add > 0 ? GliderInstructions::tr("%1: add %2 g of lead shot (holds at most %3 g).")
                           : GliderInstructions::tr("%1: take out %2 g of lead shot (holds at most %3 g)."))
                      .arg(label)
-                     .arg(std::abs(add), 0, 'f', 0)
-                     .arg(num(pt, "capacity_g", 0.0), 0, 'f', 0);
+                     .arg(fixed(std::abs(add), 0))
+                     .arg(fixed(num(pt, "capacity_g", 0.0), 0));
   }
   out.steps << GliderInstructions::tr("Bow bottles %1 g, aft bottles %2 g: %3 g in all, in %4 g steps.")
                    .arg(g0(num(p, "bow_change_g", 0.0)), g0(num(p, "aft_change_g", 0.0)), g0(num(p, "total_change_g", 0.0)))
-                   .arg(num(p, "resolution_g", 1.0), 0, 'f', 0);
+                   .arg(fixed(num(p, "resolution_g", 1.0), 0));
   if (p.contains("roll_trim")) {
     const auto& r = p["roll_trim"];
     const double g = std::abs(num(r, "rail_transfer_g", 0.0));
@@ -56,7 +56,7 @@ void slocumSteps(const nlohmann::json& p, GliderInstructions& out) {
                       ? GliderInstructions::tr("Roll %1° at zero roll command: no wing-rail change.").arg(signedFixed(num(r, "roll_deg", 0.0), 2))
                       : GliderInstructions::tr("Roll %1° at zero roll command: move %2 g from the %3 (included above).")
                             .arg(signedFixed(num(r, "roll_deg", 0.0), 2))
-                            .arg(g, 0, 'f', 0)
+                            .arg(fixed(g, 0))
                             .arg(r.value("direction", std::string()) == "starboard rail -> port rail"
                                      ? GliderInstructions::tr("starboard wing rail to the port wing rail")
                                      : GliderInstructions::tr("port wing rail to the starboard wing rail")));
@@ -65,8 +65,8 @@ void slocumSteps(const nlohmann::json& p, GliderInstructions& out) {
     const auto& t = p["pitch_trim"];
     out.steps << GliderInstructions::tr("Pitch: level flight at pump zero needs the battery at %1 mm (centre of travel %2 mm); "
                        "the bow/aft split above brings it back to the centre.")
-                     .arg(num(t, "battery_for_level_mm", 0.0), 0, 'f', 1)
-                     .arg(num(t, "battery_centre_mm", 0.0), 0, 'f', 1);
+                     .arg(fixed(num(t, "battery_for_level_mm", 0.0), 1))
+                     .arg(fixed(num(t, "battery_centre_mm", 0.0), 1));
   }
 }
 
@@ -74,29 +74,29 @@ void seagliderSteps(const nlohmann::json& p, const VehicleProfile* v, GliderInst
   const auto& s = p["seaglider"];
   const double lead = num(s, "lead_change_g", 0.0);
   out.steps << (lead == 0.0 ? GliderInstructions::tr("Lead: no change (the VBD takes it).")
-                : lead > 0  ? GliderInstructions::tr("Lead: add %1 g (%2 cm³ of lead).").arg(lead, 0, 'f', 0).arg(num(s, "lead_volume_cm3", 0.0), 0, 'f', 1)
-                            : GliderInstructions::tr("Lead: take off %1 g (%2 cm³ of lead).").arg(-lead, 0, 'f', 0).arg(-num(s, "lead_volume_cm3", 0.0), 0, 'f', 1));
+                : lead > 0  ? GliderInstructions::tr("Lead: add %1 g (%2 cm³ of lead).").arg(fixed(lead, 0)).arg(fixed(num(s, "lead_volume_cm3", 0.0), 1))
+                            : GliderInstructions::tr("Lead: take off %1 g (%2 cm³ of lead).").arg(fixed(-lead, 0)).arg(fixed(-num(s, "lead_volume_cm3", 0.0), 1)));
   out.steps << GliderInstructions::tr("Set $C_VBD from %1 to %2 (VBD %3 cm³).")
-                   .arg(num(s, "C_VBD_old", 0.0), 0, 'f', 0)
-                   .arg(num(s, "C_VBD_new", 0.0), 0, 'f', 0)
+                   .arg(fixed(num(s, "C_VBD_old", 0.0), 0))
+                   .arg(fixed(num(s, "C_VBD_new", 0.0), 0))
                    .arg(signedFixed(num(s, "VBD_change_cm3", 0.0), 1));
   if (s.contains("C_PITCH_new")) {
     const nlohmann::json sg = v && v->sections.contains("seaglider") ? v->sections["seaglider"] : nlohmann::json::object();
     const double lo = num(sg, "PITCH_MIN", -1e9), hi = num(sg, "PITCH_MAX", 1e9), c = num(s, "C_PITCH_new", 0.0);
     if (c >= lo && c <= hi) {
       out.steps << GliderInstructions::tr("Set $C_PITCH from %1 to %2 (pitch mass for level flight at %3 mm).")
-                       .arg(num(s, "C_PITCH_old", 0.0), 0, 'f', 0)
-                       .arg(c, 0, 'f', 0)
-                       .arg(num(s, "pitch_mass_for_level_mm", 0.0), 0, 'f', 1);
+                       .arg(fixed(num(s, "C_PITCH_old", 0.0), 0))
+                       .arg(fixed(c, 0))
+                       .arg(fixed(num(s, "pitch_mass_for_level_mm", 0.0), 1));
     } else {
       // A count the pitch mass cannot reach: the log's pitch trim does not
       // fit this vehicle; asking for it would be a wrong instruction.
       out.steps << GliderInstructions::tr("Keep $C_PITCH at %1: the log's pitch trim gives %2, outside PITCH_MIN .. PITCH_MAX (%3 .. %4); "
                          "check the pitch trim on a test dive.")
-                       .arg(num(s, "C_PITCH_old", 0.0), 0, 'f', 0)
-                       .arg(c, 0, 'f', 0)
-                       .arg(lo, 0, 'f', 0)
-                       .arg(hi, 0, 'f', 0);
+                       .arg(fixed(num(s, "C_PITCH_old", 0.0), 0))
+                       .arg(fixed(c, 0))
+                       .arg(fixed(lo, 0))
+                       .arg(fixed(hi, 0));
     }
   }
   out.steps << GliderInstructions::tr("Basis: %1.").arg(q(s.value("basis", std::string())));
@@ -112,9 +112,9 @@ GliderInstructions gliderInstructions(const nlohmann::json& p, const VehicleProf
   const QString grams = std::isfinite(sigma) ? GliderInstructions::tr("%1 ± %2 g").arg(g0(add), fixed(sigma, 0)) : GliderInstructions::tr("%1 g").arg(g0(add));
   out.headline = GliderInstructions::tr("Mass to add %1 for neutral with the pump at zero in %2 kg/m³ water at %3 dbar, %4 °C.")
                      .arg(grams)
-                     .arg(num(t, "density_kgm3", 0.0), 0, 'f', 2)
-                     .arg(num(t, "pressure_dbar", 0.0), 0, 'f', 0)
-                     .arg(num(t, "temperature_degC", 0.0), 0, 'f', 2);
+                     .arg(fixed(num(t, "density_kgm3", 0.0), 2))
+                     .arg(fixed(num(t, "pressure_dbar", 0.0), 0))
+                     .arg(fixed(num(t, "temperature_degC", 0.0), 2));
   out.target = GliderInstructions::tr("Target water: %1.").arg(q(t.is_object() ? t.value("basis", std::string()) : std::string()));
   const std::string type = p.value("vehicle_type", std::string());
   if (type == "slocum") {
@@ -124,7 +124,7 @@ GliderInstructions gliderInstructions(const nlohmann::json& p, const VehicleProf
   } else {
     out.steps << GliderInstructions::tr("Change the glider's mass by %1 g at its ballast places so that it stays level.").arg(g0(add));
     if (p.contains("linear_battery_for_level_mm"))
-      out.steps << GliderInstructions::tr("Linear battery for level flight at pump zero: %1 mm.").arg(num(p, "linear_battery_for_level_mm", 0.0), 0, 'f', 1);
+      out.steps << GliderInstructions::tr("Linear battery for level flight at pump zero: %1 mm.").arg(fixed(num(p, "linear_battery_for_level_mm", 0.0), 1));
   }
   out.cannot_tell = planLines(p, "cannot_tell");
   out.warnings = planLines(p, "warnings");
@@ -152,10 +152,10 @@ WorkOrder makeGliderWorkOrder(const WizardState& s, TimePoint now) {
     most_g = std::max(most_g, std::abs(add));
     const double cap = num(pt, "capacity_g");
     const QString pieces = add == 0.0                    ? QString()
-                           : p.value("vehicle_type", "") == "slocum" ? GliderInstructions::tr("%1 × 1 g lead shot").arg(std::abs(add), 0, 'f', 0)
-                                                                   : GliderInstructions::tr("%1 g lead").arg(std::abs(add), 0, 'f', 0);
+                           : p.value("vehicle_type", "") == "slocum" ? GliderInstructions::tr("%1 × 1 g lead shot").arg(fixed(std::abs(add), 0))
+                                                                   : GliderInstructions::tr("%1 g lead").arg(fixed(std::abs(add), 0));
     w.rows.push_back({q(pt.value("label", pt.value("name", std::string()))), GliderInstructions::tr("%1 g").arg(g0(add)), pieces,
-                      std::isfinite(cap) ? GliderInstructions::tr("%1 g").arg(cap, 0, 'f', 0) : QString(), QString(), QString()});
+                      std::isfinite(cap) ? GliderInstructions::tr("%1 g").arg(fixed(cap, 0)) : QString(), QString(), QString()});
   }
   const double sigma = num(p, "mass_to_add_sigma_g");
   w.expected << (std::isfinite(sigma) ? GliderInstructions::tr("Neutral with the pump at zero in the water above, within ± %1 g (1 σ).").arg(fixed(sigma, 0))

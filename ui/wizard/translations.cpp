@@ -10,12 +10,18 @@ std::unique_ptr<QTranslator>& current() {
   static std::unique_ptr<QTranslator> t;
   return t;
 }
+// The default locale before any translation: numbers go back to it.
+const QLocale& startLocale() {
+  static const QLocale l;
+  return l;
+}
 }  // namespace
 
 void removeTranslation() {
   if (current()) {
     QCoreApplication::removeTranslator(current().get());
     current().reset();
+    QLocale::setDefault(startLocale());
   }
 }
 
@@ -28,6 +34,9 @@ bool installTranslation(const QLocale& locale) {
   if (!t->load(l, "auvballast", "_", ":/i18n")) return false;
   QCoreApplication::installTranslator(t.get());
   current() = std::move(t);
+  // Numbers in the same language as the words ("1025,4" under nb), typed and shown.
+  (void)startLocale();
+  QLocale::setDefault(l);
   return true;
 }
 

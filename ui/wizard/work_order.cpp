@@ -90,13 +90,13 @@ WorkOrder makeFirstMissionWorkOrder(const WizardState& s, TimePoint now) {
   w.water_title = WorkOrder::tr("Water the vehicle is balanced for");
   // A tank session states the target water by its density, not salinity.
   w.water << (r.method == "tank" ? WorkOrder::tr("Target water: density %1 kg/m³ at %2 °C")
-                                       .arg(r.density_kgm3, 0, 'f', 2)
-                                       .arg(r.temperature_degC, 0, 'f', 2)
+                                       .arg(fixed(r.density_kgm3, 2))
+                                       .arg(fixed(r.temperature_degC, 2))
                                  : WorkOrder::tr("%1 °C, %2 PSU at %3 m: density %4 kg/m³")
-                                       .arg(r.temperature_degC, 0, 'f', 2)
-                                       .arg(r.salinity_psu, 0, 'f', 2)
-                                       .arg(r.depth_m, 0, 'f', 0)
-                                       .arg(r.density_kgm3, 0, 'f', 2))
+                                       .arg(fixed(r.temperature_degC, 2))
+                                       .arg(fixed(r.salinity_psu, 2))
+                                       .arg(fixed(r.depth_m, 0))
+                                       .arg(fixed(r.density_kgm3, 2)))
           << WorkOrder::tr("Weighed %1 kg, buoyancy %2 kg: net buoyancy %3 before the change (positive = light)")
                  .arg(fixed(r.weight_kg, g ? 3 : 1), fixed(r.buoyancy_kg, g ? 3 : 1), net(r.net_buoyancy_kg, true));
 
@@ -143,14 +143,14 @@ WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint 
 
   const PlannedPointResult& op = p.at_points.front();
   w.water << WorkOrder::tr("Operating depth %1 m: %2 °C, %3 PSU, in-situ density %4 kg/m³ (%5)")
-                 .arg(op.water.depth_m, 0, 'f', 0)
-                 .arg(op.water.temperature_degC, 0, 'f', 2)
-                 .arg(op.water.salinity_psu, 0, 'f', 2)
-                 .arg(op.state.density_kgm3, 0, 'f', 2)
+                 .arg(fixed(op.water.depth_m, 0))
+                 .arg(fixed(op.water.temperature_degC, 2))
+                 .arg(fixed(op.water.salinity_psu, 2))
+                 .arg(fixed(op.state.density_kgm3, 2))
                  .arg(s.next_water_source == "operator" ? WorkOrder::tr("entered by the operator") : WorkOrder::tr("last mission's CTD"));
   QStringList others;
   for (std::size_t i = 1; i < p.at_points.size(); ++i) {
-    others << WorkOrder::tr("%1 m (%2)").arg(p.at_points[i].water.depth_m, 0, 'f', 0).arg(q(p.at_points[i].role));
+    others << WorkOrder::tr("%1 m (%2)").arg(fixed(p.at_points[i].water.depth_m, 0)).arg(q(p.at_points[i].role));
   }
   if (!others.isEmpty()) w.water << WorkOrder::tr("Must also stay light at: %1").arg(others.join(", "));
 
@@ -173,7 +173,7 @@ WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint 
   const TrimSpec& spec = v.spec;
   // A quantity the analysis did not identify is "not known", never ± 0.
   const bool pitch_known = EstimateText::pitchKnown(p), roll_known = EstimateText::rollKnown(p);
-  w.expected << (differs ? WorkOrder::tr("As actually installed, at %1 m:") : WorkOrder::tr("As planned, at %1 m:")).arg(op.water.depth_m, 0, 'f', 0)
+  w.expected << (differs ? WorkOrder::tr("As actually installed, at %1 m:") : WorkOrder::tr("As planned, at %1 m:")).arg(fixed(op.water.depth_m, 0))
              << WorkOrder::tr("Net buoyancy %1 ± %2 kg (band %3 .. %4 kg): %5")
                     .arg(signedFixed(r.net_buoyancy_kg, nd), fixed(r.net_sigma_kg, nd))
                     .arg(fixed(std::max(0.0, spec.net_buoyancy_min_kg), 1), fixed(spec.net_buoyancy_max_kg, 1))
