@@ -66,14 +66,13 @@ GliderBallastAnswer gliderBallastAnswer(const GliderCheckModel& m, const ModelCh
   // (a mass drift that helps the equation error but not the held-out
   // simulation, on a short log) may still be there: its linearised value,
   // weighted by its inclusion probability, widens the sigma too.
+  const auto counted = [&](const std::string& id) {  // accepted, or already carried as a rival
+    return std::find(a.terms_used.begin(), a.terms_used.end(), id) != a.terms_used.end() ||
+           std::any_of(r.rival_fits.begin(), r.rival_fits.end(), [&](const RivalFit& rf) { return rf.rival == id; });
+  };
   for (const CandidateReport& c : r.candidates) {
     const auto k = findTerm(c.id);
-    if (!k || !(c.inclusion_probability > 0.0) || !std::isfinite(c.value)) continue;
-    const auto used = [&](const std::string& id) {
-      return std::find(a.terms_used.begin(), a.terms_used.end(), id) != a.terms_used.end() ||
-             std::any_of(r.rival_fits.begin(), r.rival_fits.end(), [&](const RivalFit& rf) { return rf.rival == id; });
-    };
-    if (used(c.id)) continue;
+    if (!k || !(c.inclusion_probability > 0.0) || !std::isfinite(c.value) || counted(c.id)) continue;
     Params with = p;
     with.terms[*k] += c.value / lib[*k].display_scale;
     const double d = m.massToAddKg(with, t) - m.massToAddKg(p, t);

@@ -52,7 +52,6 @@ inline QLabel* makeErrorLabel(const QString& name = QStringLiteral("error")) {
   return l;
 }
 
-
 // Numbers on pages in the wizard's language (translations.h sets the
 // default locale with the translation: "1025,4" under --lang nb), without
 // group separators (a technician types 1565.2, not 1,565.2). Files a

@@ -6,12 +6,13 @@
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
-#include <QLocale>
 #include <QMouseEvent>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string>
+
+#include "widgets/inputs.h"
 
 namespace auv::ui {
 
@@ -88,10 +89,7 @@ QString NumberInput::format(double v) const {
   int d = decimals_;
   const double tol = 1e-9 * std::max(1.0, std::abs(v));
   while (d < decimals_ + 6 && std::abs(std::round(v * std::pow(10.0, d)) / std::pow(10.0, d) - v) > tol) ++d;
-  if (std::round(v * std::pow(10.0, d)) == 0.0) v = 0.0;  // never "-0.0"
-  QLocale loc;
-  loc.setNumberOptions(QLocale::OmitGroupSeparator);
-  return loc.toString(v, 'f', d);
+  return fixed(v, d);  // the pages' locale, never "-0.0"
 }
 
 bool NumberInput::parse(const QString& text, double* out) {
