@@ -81,9 +81,9 @@ int main(int argc, char** argv) {
     else if (a == "--verbose") verbose = true;
     else if (a == "--log-interval" && i + 1 < argc) log_interval_s = std::atof(argv[++i]);
     else if (a == "--transients") transients = true;
-    else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: log and report of one truth
+    else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: logs (first, -2 second) and report of one truth
       const identification::Harness h;
-      const auto r = h.run(std::strtoull(argv[i + 1], nullptr, 10), false, argv[i + 2]);
+      const auto r = h.run(std::strtoull(argv[i + 1], nullptr, 10), true, argv[i + 2]);
       std::printf("%s\n", r.truth.describe().c_str());
       return 0;
     }

@@ -15,6 +15,9 @@ inline constexpr MessageFormat kNoSteadyLevel{
     "no steady level-flight segment of at least %1 s was found: errors and estimates are not available"};
 inline constexpr MessageFormat kWindowExcluded{"analysis.window_excluded",
                                                "%1: %2 interval(s), %3 s excluded from steady windows"};
+inline constexpr MessageFormat kAveragedLegs{
+    "analysis.averaged_legs",
+    "%1 leg(s) flown in a slow oscillation were averaged over whole cycles instead of steady windows"};
 inline constexpr MessageFormat kPitchBasisGlide{"analysis.pitch_basis_glide",
                                                 "measured - commanded, during glides whose command has the phase's sign"};
 inline constexpr MessageFormat kPitchBasisLevel{"analysis.pitch_basis_level", "measured - commanded, in steady level flight"};
@@ -107,7 +110,7 @@ inline constexpr MessageFormat kBgFromProfile{
 
 // Every analysis message, for completeness checks of the translations.
 inline constexpr const MessageFormat* kAll[] = {
-    &kNoSteadyGlide, &kNoSteadyLevel, &kWindowExcluded, &kPitchBasisGlide, &kPitchBasisLevel, &kPitchBasisNoCommand,
+    &kNoSteadyGlide, &kNoSteadyLevel, &kWindowExcluded, &kAveragedLegs, &kPitchBasisGlide, &kPitchBasisLevel, &kPitchBasisNoCommand,
     &kNoDepthCommand, &kCtdOutOfRange, &kNoDensity, &kGliderCgX, &kGliderCgY, &kNoPumpVolume, &kNoPitch, &kNoSteadyDiveOrClimb, &kFewGlideSamples,
     &kLogMassDiffers, &kGliderFitNotConverged, &kGliderDefaultConstants, &kGliderDefaultCompressibility,
     &kNoRollSamples, &kNoPropRpm, &kOneCruiseRpm, &kCgYNeedsBg, &kNoSteadyLevelSegment, &kNoSpeed, &kNoSpeedAndPitch,

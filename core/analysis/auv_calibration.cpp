@@ -16,30 +16,32 @@ struct Priors {
 };
 
 // Row pair of one segment: A p = b (residual A p - b).
+// `from_means`: the products from the means v even for an averaged leg (the
+// sensitivity to the means' errors, segmentCovariance).
 void rowsOf(const SteadyHydroCoefficients& c, double W, double rho_ref, const CalibrationSegment& s,
-            const std::array<double, 5>& v, Eigen::Matrix<double, 2, kCalibrationCount>& A, Eigen::Vector2d& b) {
-  const double u = v[kSpeed], au = std::abs(u), th = v[kPitch], ph = v[kRoll];
-  const double cc = std::cos(th) * std::cos(ph);
-  const double w = (u * std::sin(th) + v[kRate]) / cc;
-  const double uu = au * u;
+            const std::array<double, 5>& v, Eigen::Matrix<double, 2, kCalibrationCount>& A, Eigen::Vector2d& b,
+            bool from_means = false) {
+  const BalanceRegressors r = s.regressors && !from_means
+                                  ? *s.regressors
+                                  : balanceRegressors({v[kSpeed], v[kPitch], v[kRoll], v[kElev], v[kRate], s.density_kgm3});
   const double L = c.reference_length_m;
   const double kZw = 0.5 * s.density_kgm3 * L * L * c.Zw_prime;
   const double rho_ratio = s.density_kgm3 / rho_ref;
   A.setZero();
-  A(0, kNet) = cc;
-  A(0, kHeave) = -kZw * au * w;
-  A(0, kCrossflow) = -c.Zww_kg_per_m * std::abs(w) * w;
-  A(1, kXg) = W * cc;
-  A(1, kBg) = (s.weight_n > 0.0 ? s.weight_n : W) * std::sin(th);
-  A(1, kPitchUw) = -rho_ratio * u * w;
-  A(1, kCrossflow) = -c.Mww_kg * std::abs(w) * w;
+  A(0, kNet) = r.cc;
+  A(0, kHeave) = -kZw * r.au_w;
+  A(0, kCrossflow) = -c.Zww_kg_per_m * r.aw_w;
+  A(1, kXg) = W * r.cc;
+  A(1, kBg) = (s.weight_n > 0.0 ? s.weight_n : W) * r.sin_theta;
+  A(1, kPitchUw) = -rho_ratio * r.u_w;
+  A(1, kCrossflow) = -c.Mww_kg * r.aw_w;
   if (c.has_planes) {
-    A(0, kPlanes) = -c.Z_e_per_deg * uu * v[kElev];
-    A(0, kPlaneOffset) = c.Z_e_per_deg * uu;
-    A(1, kPlanes) = -c.M_e_per_deg * uu * v[kElev];
-    A(1, kPlaneOffset) = c.M_e_per_deg * uu;
+    A(0, kPlanes) = -c.Z_e_per_deg * r.au_u_e;
+    A(0, kPlaneOffset) = c.Z_e_per_deg * r.au_u;
+    A(1, kPlanes) = -c.M_e_per_deg * r.au_u_e;
+    A(1, kPlaneOffset) = c.M_e_per_deg * r.au_u;
   }
-  b << -s.buoyancy_change_n * cc, -s.moment_offset_nm * cc;
+  b << -s.buoyancy_change_n * r.cc, -s.moment_offset_nm * r.cc;
 }
 
 // Covariance of a segment's two balance residuals (heave force, pitch
@@ -51,7 +53,7 @@ Eigen::Matrix2d segmentCovariance(const SteadyHydroCoefficients& c, double W, do
   auto resid = [&](const std::array<double, 5>& v) {
     Eigen::Matrix<double, 2, kCalibrationCount> Ai;
     Eigen::Vector2d bi;
-    rowsOf(c, W, rho_ref, s, v, Ai, bi);
+    rowsOf(c, W, rho_ref, s, v, Ai, bi, true);
     return Eigen::Vector2d(Ai * p - bi);
   };
   Eigen::Matrix2d C = Eigen::Matrix2d::Zero();

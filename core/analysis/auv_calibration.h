@@ -19,6 +19,7 @@
 // keeps its prior width in the sigmas of net buoyancy and CG x.
 #include <array>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,7 @@ struct CalibrationSegment {
   std::array<double, 5> v{}, se{};
   double density_kgm3 = 1025.0;
   double buoyancy_change_n = 0.0;  // B_i - B_reference from density and hull law (known)
+  std::optional<BalanceRegressors> regressors;  // an averaged leg's cycle means; unset = from the means v
   // A segment of an earlier mission of the same configuration (history,
   // issue 11 item 3): its weight, and the known moment of the pieces moved
   // since, W_now x_now = W_then x_then + moment, so moment_offset_nm = -moment.

@@ -81,4 +81,11 @@ HydroLoads steadyHydroLoads(const SteadyHydroCoefficients& c, const SteadyFlight
   return h;
 }
 
+BalanceRegressors balanceRegressors(const SteadyFlight& f) {
+  const double u = f.speed_mps, au = std::abs(u);
+  const double cc = std::cos(f.pitch_rad) * std::cos(f.roll_rad);
+  const double w = (u * std::sin(f.pitch_rad) + f.depth_rate_mps) / cc;
+  return {cc, std::sin(f.pitch_rad), au * w, u * w, std::abs(w) * w, au * u, au * u * f.elevator_deg};
+}
+
 }  // namespace auv::analysis

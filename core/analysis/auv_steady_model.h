@@ -60,4 +60,19 @@ struct HydroLoads {
 
 HydroLoads steadyHydroLoads(const SteadyHydroCoefficients& c, const SteadyFlight& f);
 
+// The products the balance is linear in (w from the heave kinematics above,
+// e in degrees). Over an oscillation the balance of the means holds for the
+// means of these products, not for the products of the means (|w| w, u w
+// and u^2 e swing together), so an averaged leg carries their cycle means.
+struct BalanceRegressors {
+  double cc = 1.0;         // cos(theta) cos(phi)
+  double sin_theta = 0.0;
+  double au_w = 0.0;       // |u| w
+  double u_w = 0.0;        // u w
+  double aw_w = 0.0;       // |w| w
+  double au_u = 0.0;       // |u| u
+  double au_u_e = 0.0;     // |u| u e
+};
+BalanceRegressors balanceRegressors(const SteadyFlight& f);
+
 }  // namespace auv::analysis

@@ -376,6 +376,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     c.se = meas[j].se;
     c.density_kgm3 = std::isfinite(g.density_kgm3) ? g.density_kgm3 : ctx.density_kgm3;
     c.buoyancy_change_n = std::isfinite(g.buoyancy_change_n) ? g.buoyancy_change_n : 0.0;
+    c.regressors = g.regressors;
     c.weight_n = g.weight_n;
     c.moment_offset_nm = g.moment_offset_nm;
     cs.push_back(c);
@@ -389,6 +390,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     c.se = hm.se;
     c.density_kgm3 = std::isfinite(g.density_kgm3) ? g.density_kgm3 : ctx.density_kgm3;
     c.buoyancy_change_n = g.buoyancy_change_n;
+    c.regressors = g.regressors;
     c.weight_n = g.weight_n;
     c.moment_offset_nm = g.moment_offset_nm;
     cs.push_back(c);

@@ -30,6 +30,9 @@ struct SteadySegmentMeans {
   double density_kgm3 = std::numeric_limits<double>::quiet_NaN();
   double buoyancy_change_n = 0.0;
   double buoyancy_n = std::numeric_limits<double>::quiet_NaN();  // rho_i V_i g, absolute
+  // Averaged legs (averaged_legs.h): the cycle means of the balance's
+  // products (auv_steady_model.h); unset = a steady window.
+  std::optional<BalanceRegressors> regressors = std::nullopt;
   // History segments only (see CalibrationSegment): set by the caller.
   double weight_n = 0.0, moment_offset_nm = 0.0;
   bool from_history = false;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "analysis/auv_steady_model.h"
+#include "analysis/averaged_legs.h"
 #include "analysis/auv_transient_fit.h"
 #include "analysis/auv_trim_estimation.h"
 #include "analysis/classic_thesis.h"
@@ -74,6 +75,22 @@ void forEachInWindows(const TimeSeries& s, const std::vector<Segment>& win, F&& 
     if (w == win.size()) break;
     if (t >= win[w].start_s) f(w, t, s.v[i]);
   }
+}
+
+// An averaged leg's means over its whole oscillation cycles, with the
+// cycle-to-cycle spread as their standard errors (averaged_legs.h).
+void averageOverCycles(const MissionLog& log, const Segment& leg, const TimeSeries& depth_rate, SteadySegmentMeans& m) {
+  const std::span<const double> b = leg.cycle_bounds_s;
+  auto over = [&](const char* channel, MeanEstimate& e) {
+    if (log.has(channel)) e = cycleMean(log.series(channel), b);
+  };
+  over("speed", m.speed_mps);
+  over("pitch", m.pitch_deg);
+  over("roll", m.roll_deg);
+  over("elevator", m.elevator_deg);
+  over("prop_rpm", m.prop_rpm);
+  m.depth_rate_mps = cycleMean(depth_rate, b);
+  if (log.has("pitch") && log.has("speed")) m.regressors = cycleRegressors(log, depth_rate, b);
 }
 
 void simpleStats(const MissionLog& log, const char* channel, const std::vector<Segment>& win, WindowStats& st) {
@@ -198,13 +215,13 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
 
   // --- per-window statistics, one channel at a time --------------------------
   WindowStats zS(nw), zRate(nw), dErr(nw), pitch(nw), pErr(nw), roll(nw), speed(nw), rpm(nw), elev(nw);
+  const TimeSeries depthRate{depth.t, localRate(depth, so.rate_window_s, so.max_gap_s)};
   {
-    const std::vector<double> rate = localRate(depth, so.rate_window_s, so.max_gap_s);
     std::size_t i = 0;
     forEachInWindows(depth, win, [&](std::size_t w, double t, double z) {
       while (depth.t[i] < t) ++i;
       zS.add(w, z);
-      zRate.add(w, rate[i]);
+      zRate.add(w, depthRate.v[i]);
     });
   }
   const bool hasDepthCmd = hasSamples(log, "depth_cmd");
@@ -291,6 +308,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     const double Bref = rho * v.hull.volumeAt(Tref, pref);  // kg
     for (std::size_t w = 0; w < nw; ++w) {
       means[w] = {win[w].start_s, win[w].end_s, speed.at(w), pitch.at(w), roll.at(w), elev.at(w), zRate.at(w), rpm.at(w)};
+      if (win[w].averaged()) averageOverCycles(log, win[w], depthRate, means[w]);
       if (perWindowWater && std::isfinite(water.win_rho[w])) {
         const double Ti = std::isfinite(water.win_T[w]) ? water.win_T[w] : Tref;
         const double pi = std::isfinite(water.win_p[w]) ? water.win_p[w] : pref;

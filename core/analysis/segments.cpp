@@ -1,11 +1,13 @@
 #include "analysis/segments.h"
 
 #include "analysis/analysis_messages.h"
+#include "analysis/averaged_legs.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <string_view>
 #include <utility>
 
 #include "common/input_error.h"
@@ -190,12 +192,12 @@ Segmentation detectSegments(const MissionLog& log, const SegmentOptions& o) {
   }
   mergeShortRuns(runs, o.min_phase_s);
   for (const Run& r : runs)
-    if (r.alive && r.end > r.start) seg.phases.push_back({r.kind, r.start, r.end, r.kind});
+    if (r.alive && r.end > r.start) seg.phases.push_back({r.kind, r.start, r.end, r.kind, {}});
 
   if (o.glider) {
     for (const Segment& p : seg.phases) {
       if (p.kind != SegmentKind::kDive && p.kind != SegmentKind::kClimb) continue;
-      Segment g{SegmentKind::kGlide, p.start_s + o.glide_trim_s, p.end_s - o.glide_trim_s, p.kind};
+      Segment g{SegmentKind::kGlide, p.start_s + o.glide_trim_s, p.end_s - o.glide_trim_s, p.kind, {}};
       if (g.duration() >= o.min_phase_s) seg.operating.push_back(g);
     }
     return seg;
@@ -220,11 +222,15 @@ Segmentation detectSegments(const MissionLog& log, const SegmentOptions& o) {
       {"speed", false, o.speed_rate_limit_mps2, "speed changes"},
       {"prop_rpm", false, o.rpm_rate_limit_per_s, "propeller speed changes"},
   };
-  std::vector<TimeWindow> cut;
+  std::vector<TimeWindow> cut, command_cut;
   for (const Source& s : sources) {
     std::vector<TimeWindow> w;
     addUnsteadyWindows(log, s.channel, s.command, s.limit, o, w);
     w = mergeWindows(std::move(w));
+    // The legs the mission planned: a logged pitch command may be the depth
+    // loop's own output, which swings with the oscillation being averaged.
+    const std::string_view ch = s.channel;
+    if (ch == "depth_cmd" || ch == "prop_rpm") command_cut.insert(command_cut.end(), w.begin(), w.end());
     // Only what falls inside level flight is worth a note.
     const std::vector<TimeWindow> inside = subtractWindows(level, subtractWindows(level, w));
     double total = 0.0;
@@ -233,7 +239,19 @@ Segmentation detectSegments(const MissionLog& log, const SegmentOptions& o) {
     cut.insert(cut.end(), w.begin(), w.end());
   }
   for (const TimeWindow& w : subtractWindows(level, mergeWindows(std::move(cut))))
-    if (w.duration() >= o.min_steady_s) seg.operating.push_back({SegmentKind::kSteady, w.start_s, w.end_s, SegmentKind::kLevel});
+    if (w.duration() >= o.min_steady_s) seg.operating.push_back({SegmentKind::kSteady, w.start_s, w.end_s, SegmentKind::kLevel, {}});
+  if (!o.average_oscillating_legs) return seg;
+  const std::vector<Segment> legs = averagedLegs(log, depth, mergeWindows(std::move(command_cut)), seg.operating, o);
+  if (legs.empty()) return seg;
+  // Steady windows inside an averaged leg would count its data twice.
+  std::erase_if(seg.operating, [&](const Segment& s) {
+    return std::any_of(legs.begin(), legs.end(),
+                       [&](const Segment& l) { return s.start_s < l.end_s && s.end_s > l.start_s; });
+  });
+  seg.operating.insert(seg.operating.end(), legs.begin(), legs.end());
+  std::sort(seg.operating.begin(), seg.operating.end(),
+            [](const Segment& a, const Segment& b) { return a.start_s < b.start_s; });
+  seg.notes.push_back(Message(msg::kAveragedLegs, {std::to_string(legs.size())}));
   return seg;
 }
 

@@ -30,6 +30,11 @@ struct Segment {
   double end_s = 0.0;
   // For kGlide: the phase it belongs to (kDive or kClimb).
   SegmentKind phase = SegmentKind::kLevel;
+  // An averaged leg (averaged_legs.h): the boundaries of the whole
+  // oscillation cycles it spans (front = start_s, back = end_s); empty for a
+  // steady window.
+  std::vector<double> cycle_bounds_s;
+  bool averaged() const { return !cycle_bounds_s.empty(); }
   double duration() const { return end_s - start_s; }
   TimeWindow window() const { return {start_s, end_s}; }
 };
@@ -50,6 +55,16 @@ struct SegmentOptions {
   double pitch_cmd_step_deg = 0.5;
   double speed_rate_limit_mps2 = 0.01;  // |d speed/dt| above this = changing speed
   double rpm_rate_limit_per_s = 1.0;    // |d rpm/dt| above this = changing propeller speed
+  // Averaged legs (AUV): constant-command legs with no steady window, flown
+  // in a slow oscillation, averaged over whole cycles (averaged_legs.h).
+  bool average_oscillating_legs = true;
+  double average_min_s = 600.0;        // whole cycles spanning at least this
+  int average_min_cycles = 2;
+  double average_depth_band_m = 3.0;   // the depth stays this close to the command after arriving
+  double average_arrive_m = 1.0;       // arrived: first this close to the command
+  double average_min_period_s = 60.0;  // faster "cycles" are noise
+  double average_max_steady_cover = 0.5;  // legs mostly covered by steady windows keep those ...
+  double average_min_swing_deg = 1.0;     // ... unless the smoothed pitch swings by this sd
   // Glides: trimmed at both ends (inflection, pump and battery moves).
   double glide_trim_s = 30.0;
 };

@@ -40,6 +40,10 @@ nlohmann::json steadySegmentsJson(const std::vector<SteadySegmentMeans>& segment
                  {"prop_rpm", meanJson(s.prop_rpm)},
                  {"density_kgm3", std::isfinite(s.density_kgm3) ? nlohmann::json(s.density_kgm3) : nlohmann::json(nullptr)},
                  {"buoyancy_n", std::isfinite(s.buoyancy_n) ? nlohmann::json(s.buoyancy_n) : nlohmann::json(nullptr)}});
+    if (const auto& r = s.regressors)
+      a.back()["cycle_regressors"] = {{"cc", r->cc},     {"sin_theta", r->sin_theta}, {"au_w", r->au_w},
+                                      {"u_w", r->u_w},   {"aw_w", r->aw_w},           {"au_u", r->au_u},
+                                      {"au_u_e", r->au_u_e}};
   }
   return a;
 }
@@ -60,6 +64,17 @@ std::vector<SteadySegmentMeans> steadySegmentsFromJson(const nlohmann::json& j, 
       *field = meanFrom(e.contains(key) ? e[key] : nlohmann::json(nullptr), at + "." + key);
     s.density_kgm3 = numberOr(e, "density_kgm3", s.density_kgm3);
     s.buoyancy_n = numberOr(e, "buoyancy_n", s.buoyancy_n);
+    if (e.contains("cycle_regressors") && e["cycle_regressors"].is_object()) {
+      const nlohmann::json& r = e["cycle_regressors"];
+      BalanceRegressors g;
+      for (auto [key, field] : {std::pair{"cc", &g.cc}, {"sin_theta", &g.sin_theta}, {"au_w", &g.au_w}, {"u_w", &g.u_w},
+                                {"aw_w", &g.aw_w}, {"au_u", &g.au_u}, {"au_u_e", &g.au_u_e}}) {
+        if (!r.contains(key) || !r[key].is_number())
+          throw InputError(at + ".cycle_regressors." + key, "is missing or not a number", "write it with 'auvballast analyze'");
+        *field = r[key].get<double>();
+      }
+      s.regressors = g;
+    }
     out.push_back(s);
   }
   return out;

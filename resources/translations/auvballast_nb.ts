@@ -4,656 +4,661 @@
 <context>
     <name>Advice</name>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="20"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="23"/>
         <source>No steady dive or climb long enough was found: nothing to estimate from.</source>
         <translation>Fant ingen stødig dykk eller stigning som var lang nok: ingenting å estimere fra.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="21"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="24"/>
         <source>No steady level flight of at least %1 s was found: errors and estimates are not available.</source>
         <translation>Fant ingen stødig planflyging på minst %1 s: avvik og estimater er ikke tilgjengelige.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="22"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="25"/>
         <source>%1: %2 interval(s), %3 s left out of the steady windows.</source>
         <translation>%1: %2 intervall, %3 s holdt utenfor de stødige vinduene.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="23"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="26"/>
+        <source>%1 leg(s) where the vehicle swung slowly up and down were averaged over whole swings.</source>
+        <translation>%1 etappe(r) der fartøyet svingte sakte opp og ned ble midlet over hele svingninger.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
         <source>measured minus commanded, during glides whose command has the phase&apos;s sign</source>
         <translation>målt minus beordret, i glid der ordren har fasens fortegn</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="24"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="28"/>
         <source>measured minus commanded, in steady level flight</source>
         <translation>målt minus beordret, i stødig planflyging</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="25"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="29"/>
         <source>pitch at steady depth (the log has no commanded pitch; level flight should be at 0°)</source>
         <translation>stamp på stødig dybde (loggen har ingen beordret stamp; planflyging skal være på 0°)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="26"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="30"/>
         <source>The log has no commanded depth: the depth error is not available.</source>
         <translation>Loggen har ingen beordret dybde: dybdeavviket er ikke tilgjengelig.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="31"/>
         <source>%1 CTD samples outside the EOS-80 range were not used for the density.</source>
         <translation>%1 CTD-målinger utenfor gyldighetsområdet til EOS-80 ble ikke brukt til tettheten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="28"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="32"/>
         <source>No in-situ density could be computed (no temperature and salinity or density in the log): %1 kg/m³ assumed.</source>
         <translation>Kunne ikke beregne tetthet in situ (loggen har verken temperatur og saltholdighet eller tetthet): %1 kg/m³ er antatt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="29"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="33"/>
         <source>Not identifiable from this log: a glider&apos;s pitch is set by its battery position, not by a fixed CG (use the tank or pitch-trim procedure).</source>
         <translation>Kan ikke bestemmes fra denne loggen: en glider sin stamp settes av batteriposisjonen, ikke av et fast tyngdepunkt (bruk tank- eller stamptrimprosedyren).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="30"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="34"/>
         <source>Not identifiable from this log: the glider&apos;s roll is set by its roll mass (use the tank procedure).</source>
         <translation>Kan ikke bestemmes fra denne loggen: gliderens rull settes av rullevekten (bruk tankprosedyren).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="31"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="35"/>
         <source>Not identifiable from this log: it has no pump volume (the buoyancy engine&apos;s volume).</source>
         <translation>Kan ikke bestemmes fra denne loggen: den har ikke pumpevolum (oppdriftsmotorens volum).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="32"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="36"/>
         <source>Not identifiable from this log: it has no pitch.</source>
         <translation>Kan ikke bestemmes fra denne loggen: den har ikke stamp.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="33"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="37"/>
         <source>Not identifiable from this log: no steady dive or climb was found.</source>
         <translation>Kan ikke bestemmes fra denne loggen: fant ingen stødig dykk eller stigning.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="34"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="38"/>
         <source>Not identifiable from this log: fewer than 10 steady-glide samples deeper than %1 m with a pitch of at least %2°.</source>
         <translation>Kan ikke bestemmes fra denne loggen: færre enn 10 målinger i stødig glid dypere enn %1 m med stamp på minst %2°.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="35"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="39"/>
         <source>The log gives the mass as %1 kg but the vehicle profile has %2 kg: the fit uses the profile&apos;s mass (it matters only through density changes).</source>
         <translation>Loggen oppgir massen som %1 kg, men fartøyprofilen har %2 kg: tilpasningen bruker profilens masse (den betyr bare noe gjennom tetthetsendringer).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="36"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="40"/>
         <source>The glider flight-model fit did not converge: %1</source>
         <translation>Tilpasningen av gliderens flymodell konvergerte ikke: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="37"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="41"/>
         <source>The glider flight-model constants are the Slocum defaults (wing area 0.1 m², lift slope 7.53 per rad, induced drag 10.5 per rad²): give this glider&apos;s flight model in its vehicle profile.</source>
         <translation>Konstantene i gliderens flymodell er standardverdiene for Slocum (vingeareal 0,1 m², løftestigning 7,53 per rad, indusert motstand 10,5 per rad²): legg inn denne gliderens flymodell i fartøyprofilen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="38"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="42"/>
         <source>The hull compressibility is not in the vehicle profile: 5e-6 per dbar is used.</source>
         <translation>Skrogets kompressibilitet står ikke i fartøyprofilen: 5e-6 per dbar brukes.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="39"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="43"/>
         <source>Not identifiable from this log: no steady segment has roll samples.</source>
         <translation>Kan ikke bestemmes fra denne loggen: ingen stødige segmenter har rullmålinger.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="40"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="44"/>
         <source>The log has no propeller speed: CG y assumes the roll at cruise is static; any propeller reaction torque is included in it.</source>
         <translation>Loggen har ikke propellturtall: tyngdepunkt y antar at rullen i marsjfart er statisk; et eventuelt reaksjonsmoment fra propellen er tatt med i den.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="41"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="45"/>
         <source>All steady segments run the propeller at about the same speed, so its reaction torque cannot be told from a CG offset: CG y is the offset that levels the vehicle at this cruise speed, not the static CG.</source>
         <translation>Alle stødige segmenter kjører propellen på omtrent samme turtall, så reaksjonsmomentet kan ikke skilles fra et forskjøvet tyngdepunkt: tyngdepunkt y er forskyvningen som holder fartøyet på rett kjøl i denne marsjfarten, ikke det statiske tyngdepunktet.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="42"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="46"/>
         <source>Not identifiable from this log: a steady roll gives y = BG tan(roll), and BG (the CG height below the CB) cannot be measured from the log. Enter BG from an inclining or roll test for this configuration (static roll %1°).</source>
         <translation>Kan ikke bestemmes fra denne loggen: en stødig rull gir y = BG tan(rull), og BG (tyngdepunktets høyde under oppdriftssenteret) kan ikke måles fra loggen. Legg inn BG fra en krengeprøve eller rulletest for denne konfigurasjonen (statisk rull %1°).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="43"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="47"/>
         <source>Not identifiable from this log: no steady level flight long enough was found.</source>
         <translation>Kan ikke bestemmes fra denne loggen: fant ingen stødig planflyging som var lang nok.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="44"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="48"/>
         <source>Not identifiable from this log: it has no speed (the lift and moment that balance the buoyancy grow with the speed squared).</source>
         <translation>Kan ikke bestemmes fra denne loggen: den har ikke fart (løftet og momentet som balanserer oppdriften vokser med kvadratet av farten).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="45"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="49"/>
         <source>Not identifiable from this log: no steady segment has both speed and pitch.</source>
         <translation>Kan ikke bestemmes fra denne loggen: ingen stødige segmenter har både fart og stamp.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="46"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="50"/>
         <source>Not identifiable from this log: it has no elevator (stern-plane) angle, so each steady segment only fixes a moment about the planes&apos; centre of pressure (%1 m from the CB). Record the elevator angle.</source>
         <translation>Kan ikke bestemmes fra denne loggen: den har ikke dybderorvinkel, så hvert stødige segment bestemmer bare et moment om rorenes trykksenter (%1 m fra oppdriftssenteret). Logg dybderorvinkelen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="47"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="51"/>
         <source>Calibrated with %1 steady segments of earlier missions of this configuration and the known weight changes since.</source>
         <translation>Kalibrert med %1 stødige segmenter fra tidligere oppdrag med denne konfigurasjonen og de kjente vektendringene siden.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="48"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="52"/>
         <source>Not identifiable from this log: the steady segments do not determine the heave and pitch balance.</source>
         <translation>Kan ikke bestemmes fra denne loggen: de stødige segmentene bestemmer ikke balansen i hiv og stamp.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="49"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="53"/>
         <source>Elevator zero offset assumed 0 ± %1° (included in the uncertainties): the steady segments do not span enough speeds to tell it from the net buoyancy.</source>
         <translation>Dybderorets nullpunktsavvik er antatt 0 ± %1° (tatt med i usikkerhetene): de stødige segmentene spenner ikke over nok hastigheter til å skille det fra netto oppdrift.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="50"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="54"/>
         <source>The plane coefficients were converted to the log&apos;s elevator sign (trailing edge down positive).</source>
         <translation>Rorkoeffisientene ble regnet om til loggens fortegn for dybderoret (bakkant ned positiv).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="51"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="55"/>
         <source>The vehicle&apos;s hydrodynamics were calibrated together with the ballast state (%1 parameters determined by the log).</source>
         <translation>Fartøyets hydrodynamikk ble kalibrert sammen med ballasttilstanden (%1 parametere bestemt av loggen).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="52"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="56"/>
         <source>The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients).</source>
         <translation>Usikkerhetene kommer fra den kalibreringen (%1 % usikkerhet på forhånd per gruppe av hydrodynamiske koeffisienter).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="53"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="57"/>
         <source>The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients; the Munk moment&apos;s form unknown).</source>
         <translation>Usikkerhetene kommer fra den kalibreringen (%1 % usikkerhet på forhånd per gruppe av hydrodynamiske koeffisienter; formen på Munk-momentet er ukjent).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="54"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
         <source>BG from the vehicle profile (%1 mm ± %2 %) sets the scale of the pitch moments; BG from a roll test sharpens CG x.</source>
         <translation>BG fra fartøyprofilen (%1 mm ± %2 %) bestemmer skalaen på stampmomentene; BG fra en rulletest gjør tyngdepunkt x skarpere.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="59"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="63"/>
         <source>%1: no change (%2 stays).</source>
         <translation>%1: ingen endring (%2 blir).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="60"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="64"/>
         <source>Priorities (thesis §5.4): net buoyancy %1 to %2 and never negative, then pitch within ±%3, then roll within ±%4; %5 piece(s) to handle.</source>
         <translation>Prioriteringer (avhandlingen §5.4): netto oppdrift %1 til %2 og aldri negativ, deretter stamp innenfor ±%3, deretter rull innenfor ±%4; %5 lodd å håndtere.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="61"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="65"/>
         <source>After the move: net buoyancy %1, pitch %2, roll %3.</source>
         <translation>Etter flyttingen: netto oppdrift %1, stamp %2, rull %3.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="62"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="66"/>
         <source>Half-way policy: this move aims at about half of the needed change (net buoyancy %1 to %2, pitch %3, roll %4); check the vehicle again and repeat.</source>
         <translation>Halvveis-strategi: denne flyttingen sikter mot omtrent halvparten av nødvendig endring (netto oppdrift %1 til %2, stamp %3, rull %4); kontroller fartøyet igjen og gjenta.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="64"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="68"/>
         <source>The four scale readings add up to %1 but the hook reads %2 (tolerance %3): the CG uses the four readings, the mass uses the hook.</source>
         <translation>De fire vekttallene blir til sammen %1, men kroken viser %2 (toleranse %3): tyngdepunktet bruker de fire tallene, massen bruker kroken.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="65"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="69"/>
         <source>h = %1 is implausibly large for a glider (about 6 mm is usual): check the roll signs and which rail the mass hung on.</source>
         <translation>h = %1 er urimelig stor for en glider (omkring 6 mm er vanlig): kontroller fortegnene på rullen og hvilken skinne loddet hang på.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="66"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="70"/>
         <source>The single h values spread by %1 (%2 of the mean): repeat the roll test.</source>
         <translation>De enkelte h-verdiene sprer med %1 (%2 av middelverdien): gjenta rulletesten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="67"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="71"/>
         <source>The bottles cannot hold the level split (bow %1, aft %2): the glider will not float level. Move a disk or rail weight.</source>
         <translation>Flaskene kan ikke ta den vannrette fordelingen (baug %1, akter %2): glideren vil ikke flyte vannrett. Flytt en skive eller et skinnelodd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="68"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="72"/>
         <source>The bottles are full: %1 more is needed for neutral, so the glider stays light. Add ballast elsewhere.</source>
         <translation>Flaskene er fulle: %1 til trengs for nøytral oppdrift, så glideren forblir lett. Legg ballast et annet sted.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="69"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="73"/>
         <source>The bottles are empty: %1 more must come out, so the glider stays HEAVY. Remove a disk or rail weight.</source>
         <translation>Flaskene er tomme: %1 til må ut, så glideren forblir TUNG. Ta ut en skive eller et skinnelodd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="71"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="75"/>
         <source>The CG is not below the CB with the BG of the vehicle profile: the vehicle would capsize. Check BG in the vehicle profile.</source>
         <translation>Tyngdepunktet ligger ikke under oppdriftssenteret med BG fra fartøyprofilen: fartøyet ville kantre. Kontroller BG i fartøyprofilen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="72"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="76"/>
         <source>In the tank (%1, %2) the glider displaces %3 (%4); at %5 the hull measures %6 and is neutral at %7 in %8 water.</source>
         <translation>I tanken (%1, %2) fortrenger glideren %3 (%4); ved %5 måler skroget %6 og er nøytralt ved %7 i vann på %8.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="73"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="77"/>
         <source>It weighs %1, so it is %2 light: the bottles change by %3 (rounded down to whole grams so it never ends heavy).</source>
         <translation>Den veier %1, så den er %2 for lett: flaskene endres med %3 (rundet ned til hele gram så den aldri ender tung).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="74"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="78"/>
         <source>It weighs %1, so it is %2 heavy: the bottles change by %3 (rounded down to whole grams so it never ends heavy).</source>
         <translation>Den veier %1, så den er %2 for tung: flaskene endres med %3 (rundet ned til hele gram så den aldri ender tung).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="75"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="79"/>
         <source>Bow bottles: %1 in %2 and %3 in %4 (%5), so the bow scale would read %6 and the glider floats level.</source>
         <translation>Baugflasker: %1 i %2 og %3 i %4 (%5), så baugvekten ville vise %6 og glideren flyter plant.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="76"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="80"/>
         <source>Aft bottles: %1 in %2 and %3 in %4 (%5), so the aft scale would read %6 and the glider floats level.</source>
         <translation>Akterflasker: %1 i %2 og %3 i %4 (%5), så aktervekten ville vise %6 og glideren flyter plant.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="77"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="81"/>
         <source>No roll test recorded: set the bottles, hang the glider for the roll test (report 4.2) and enter it on the roll-test page; until then the CG height is the profile&apos;s BG.</source>
         <translation>Ingen rulletest registrert: sett flaskene, heng opp glideren for rulletesten (rapport 4.2) og før den inn på rulletestsiden; inntil da er tyngdepunktets høyde profilens BG.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="78"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="82"/>
         <source>Roll test: h = %1 from %2 hung masses, so G sits %3 to %4 of B and %5 below it.</source>
         <translation>Rulletest: h = %1 fra %2 opphengte masser, så G ligger %3 mot %4 av B og %5 under den.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="79"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="83"/>
         <source>Move %1 of rail weight from the %2 wing rail: the battery alone cannot reach the roll.</source>
         <translation>Flytt %1 skinnevekt fra %2 vingeskinne: batteriet alene kan ikke nå rullen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="80"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="84"/>
         <source>Move %1 of lead from the %2 bow bottle: the battery cannot reach the roll.</source>
         <translation>Flytt %1 bly fra %2 baugflaske: batteriet kan ikke nå rullen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="81"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="85"/>
         <source>Move %1 of lead from the %2 bow bottle: the battery and wing rails cannot reach the roll.</source>
         <translation>Flytt %1 bly fra %2 baugflaske: batteriet og vingeskinnene kan ikke nå rullen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="82"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="86"/>
         <source>Set the roll battery to %1 (%2, toward %3; now %4) to bring G straight below B.</source>
         <translation>Sett rullbatteriet til %1 (%2, mot %3; nå %4) for å bringe G rett under B.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="83"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="87"/>
         <source>The battery, wing rails and bow bottles together cannot cancel the roll: %1 remains. Move other masses sideways.</source>
         <translation>Batteriet, vingeskinnene og baugflaskene kan ikke sammen oppheve rullen: %1 gjenstår. Flytt andre masser sideveis.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="84"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="88"/>
         <source>Swap disk column %1 (%2 top, %3 bottom), which %4 G by %5.</source>
         <translation>Bytt om skivesøyle %1 (%2 øverst, %3 nederst), som %4 G med %5.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="85"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="89"/>
         <source>Move %1 of lead from the %2 aft bottle, so h goes from %3 to %4 (target %5).</source>
         <translation>Flytt %1 bly fra %2 akterflaske, så h går fra %3 til %4 (mål %5).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="86"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="90"/>
         <source>The h-arm target %1 cannot be reached with the disk weights and aft bottles; best is %2 (arrangement %3).</source>
         <translation>Målet for h-armen %1 kan ikke nås med skivevektene og akterflaskene; best er %2 (oppsett %3).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="87"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="91"/>
         <source>The predicted net buoyancy %1 is below the profile&apos;s band: the glider would end HEAVY.</source>
         <translation>Forventet netto oppdrift %1 er under profilens bånd: glideren ville ende TUNG.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="88"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="92"/>
         <source>The predicted net buoyancy %1 is above the profile&apos;s band.</source>
         <translation>Forventet netto oppdrift %1 er over profilens bånd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="89"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="93"/>
         <source>The predicted pitch %1 is outside ±%2.</source>
         <translation>Forventet stamp %1 er utenfor ±%2.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="90"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="94"/>
         <source>The predicted roll %1 is outside ±%2.</source>
         <translation>Forventet rull %1 er utenfor ±%2.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="92"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="96"/>
         <source>What is in the bottles was not given: their capacities are checked against half-full bottles. Enter what is installed to check them.</source>
         <translation>Innholdet i flaskene ble ikke oppgitt: kapasitetene kontrolleres mot halvfulle flasker. Før inn hva som er montert for å kontrollere dem.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="93"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="97"/>
         <source>The wing rails cannot take the whole roll correction (%1 g); move the roll battery or a disk weight for the rest.</source>
         <translation>Vingeskinnene kan ikke ta hele rullkorreksjonen (%1 g); flytt rullbatteriet eller en skivevekt for resten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="94"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="98"/>
         <source>the pitch trim (the log has no battery position, or it varies too little): the bottle split is Baird&apos;s level split only</source>
         <translation>stamptrimmen (loggen har ingen batteriposisjon, eller den varierer for lite): fordelingen på flaskene er bare Bairds plane fordeling</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="95"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="99"/>
         <source>the roll (the log has no roll in glides)</source>
         <translation>rullen (loggen har ingen rull under gliding)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="96"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="100"/>
         <source>C_PITCH (the log has no pitch-mass position with enough variation)</source>
         <translation>C_PITCH (loggen har ingen posisjon for stampmassen med nok variasjon)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="97"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="101"/>
         <source>where the grams go: the log carries no geometry of the ballast places; add %1 g at the vehicle&apos;s ballast places so that it stays level</source>
         <translation>hvor grammene skal: loggen har ingen geometri for ballaststedene; legg %1 g på fartøyets ballaststeder slik at det holder seg plant</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="98"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="102"/>
         <source>the ballast (pump) zero offset in the vendor&apos;s setting: only the mass change is known</source>
         <translation>ballastens (pumpens) nullpunktsforskyvning i produsentens innstilling: bare masseendringen er kjent</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="101"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="105"/>
         <source>No change: the vehicle is already as good as the kit allows.</source>
         <translation>Ingen endring: fartøyet er allerede så godt som vektsettet tillater.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="102"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="106"/>
         <source>Next mission at %1: from net buoyancy %2, pitch %3, roll %4 to %5 ± %6, pitch %7 ± %8, roll %9 ± %10 (1 σ).</source>
         <translation>Neste oppdrag ved %1: fra netto oppdrift %2, stamp %3, rull %4 til %5 ± %6, stamp %7 ± %8, rull %9 ± %10 (1 σ).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="103"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="107"/>
         <source>Mass %1 from the last mission: %2 displaced at %3, %4, %5 minus the measured net buoyancy %6.</source>
         <translation>Masse %1 fra forrige oppdrag: %2 fortrengt ved %3, %4, %5 minus målt netto oppdrift %6.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="104"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="108"/>
         <source>Safety margin %1 = %2 × σ %3 (estimate and water): the change keeps at least that much net buoyancy at every planned point.</source>
         <translation>Sikkerhetsmargin %1 = %2 × σ %3 (estimat og vann): endringen beholder minst så mye netto oppdrift i hvert planlagte punkt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="105"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="109"/>
         <source>CG x was not identified from the log: the plan assumes it at the CB and keeps the fore-aft balance. Check pitch on the next mission.</source>
         <translation>Tyngdepunkt x ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder balansen forut-akter. Kontroller stampen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="106"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="110"/>
         <source>CG y was not identified from the log: the plan assumes it at the CB and keeps the side balance. Check roll on the next mission.</source>
         <translation>Tyngdepunkt y ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder sidebalansen. Kontroller rullen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="107"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="111"/>
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="108"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="112"/>
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4: it would sink if it lost power there.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4: det ville synke om det mistet strømmen der.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="109"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="113"/>
         <source>Net buoyancy %1 at the operating depth is above the band (%2) because the safety margin (%3) and the less buoyant planned points (%4 less) come first.</source>
         <translation>Netto oppdrift %1 på operasjonsdybden er over båndet (%2) fordi sikkerhetsmarginen (%3) og de planlagte punktene med mindre oppdrift (%4 mindre) går foran.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="110"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="114"/>
         <source>The net buoyancy band cannot be reached with this kit while keeping the safety margin: no combination of pieces lands between %1 and %2; the nearest safe one is %3.</source>
         <translation>Båndet for netto oppdrift kan ikke nås med dette vektsettet uten å gi opp sikkerhetsmarginen: ingen kombinasjon av lodd lander mellom %1 og %2; den nærmeste sikre er %3.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="111"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="115"/>
         <source>The kit has optional pieces (%1) not used in this plan; allowing them may reach the missed band.</source>
         <translation>Vektsettet har valgfrie lodd (%1) som ikke er brukt i denne planen; tillater du dem, kan båndet som ble bommet på kanskje nås.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="112"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="116"/>
         <source>The estimate&apos;s own uncertainty (pitch %1, roll %2) is wider than a tolerance band; the next mission will tell.</source>
         <translation>Estimatets egen usikkerhet (stamp %1, rull %2) er bredere enn et toleransebånd; neste oppdrag vil vise det.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="113"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="117"/>
         <source>Classic table (thesis App. E): %1, pitch error %2, roll error %3; it moves one %4 piece per point and mission, whatever the size of the error.</source>
         <translation>Klassisk tabell (oppgavens vedlegg E): %1, stampavvik %2, rullavvik %3; den flytter ett lodd på %4 per punkt og oppdrag, uansett hvor stort avviket er.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="114"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="118"/>
         <source>The classic table asks to remove a piece where none is installed, so it changes nothing.</source>
         <translation>Den klassiske tabellen ber om å fjerne et lodd der ingen er montert, så den endrer ingenting.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="115"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="119"/>
         <source>The classic table uses the standard kit only.</source>
         <translation>Den klassiske tabellen bruker bare standard vektsett.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="116"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="120"/>
         <source>The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short legs at different speeds); it would bring the uncertainty to about %4 kg.</source>
         <translation>Usikkerheten i netto oppdrift (%1 kg) er for stor for båndet på %2 kg: legg kalibreringsmanøveren til neste oppdrag (%3 korte etapper i ulike hastigheter); den ville bringe usikkerheten ned til omtrent %4 kg.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="117"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="121"/>
         <source>Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).</source>
         <translation>Rull er planlagt og forutsagt i marsjfart (%1 o/min, propellmoment inkludert): sidebalansen som holder fartøyet på rett kjøl der, slik oppgaven bedømmer rull (§5.3.3).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="119"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="123"/>
         <source>%1 is a constant %2 %3 everywhere (all phases, depths and speeds)</source>
         <translation>%1 er konstant %2 %3 overalt (alle faser, dybder og hastigheter)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="120"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="124"/>
         <source>%1 grows %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="121"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="125"/>
         <source>%1 shrinks %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="122"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="126"/>
         <source>%1 grows %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="123"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="127"/>
         <source>%1 shrinks %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="124"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="128"/>
         <source>%1 concentrates at %2 %3 (mean %4 %5 against %6 overall)</source>
         <translation>%1 samler seg ved %2 %3 (middel %4 %5 mot %6 totalt)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="125"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="129"/>
         <source>%1: no factor of the log explains it</source>
         <translation>%1: ingen faktor i loggen forklarer det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="126"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="130"/>
         <source>AUV rigid-body model of the simulator (Fossen form) on smoothed logged states; simulation: replay of the logged commands through the model&apos;s autopilot; ballast state: net buoyancy and CG x/y</source>
         <translation>AUV-stivlegememodellen fra simulatoren (Fossen-form) på glattede loggede tilstander; simulering: de loggede kommandoene spilt av gjennom modellens autopilot; ballasttilstand: netto oppdrift og CG x/y</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="127"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="131"/>
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state and Cd0</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand og Cd0</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="128"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="132"/>
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state, Cd0 and the lift slope</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand, Cd0 og løftestigningstallet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="223"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="236"/>
         <source>bringing the CG back towards the CB fore-aft</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="224"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="237"/>
         <source>balanced by the other points&apos; fore-aft shares</source>
         <translation>balansert av de andre punktenes andeler forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="225"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="238"/>
         <source>bringing the CG back towards the CB sideways</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="226"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="239"/>
         <source>balanced by the other points&apos; sideways shares</source>
         <translation>balansert av de andre punktenes andeler sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="287"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="300"/>
         <source>%1: %2 (%3; %4 → %5 of %6).</source>
         <translation>%1: %2 (%3; %4 → %5 av %6).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="296"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="309"/>
         <source>%1 is largest during %2: mean %3 %4</source>
         <translation>%1 er størst under %2: middel %3 %4</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="311"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="324"/>
         <source>; independent of %1</source>
         <translation>; uavhengig av %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="206"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="274"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="219"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="287"/>
         <source> and </source>
         <translation> og </translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="210"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="282"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="223"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="295"/>
         <source>remove %1, then add %2</source>
         <translation>fjern %1, legg så til %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="212"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="284"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="225"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="297"/>
         <source>remove %1</source>
         <translation>fjern %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="214"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="286"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="227"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="299"/>
         <source>add %1</source>
         <translation>legg til %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="216"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="229"/>
         <source>%1 mm forward</source>
         <translation>%1 mm forover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="217"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="230"/>
         <source>%1 mm aft</source>
         <translation>%1 mm akterover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="219"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="232"/>
         <source>%1 mm to starboard</source>
         <translation>%1 mm mot styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="220"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="233"/>
         <source>%1 mm to port</source>
         <translation>%1 mm mot babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="229"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="242"/>
         <source>%1: %2 (%3), which lowers the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som senker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="230"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="243"/>
         <source>%1: %2 (%3), which raises the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som øker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="56"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="60"/>
         <source>The vehicle stays %1 heavy even with every removable piece out: it needs added buoyancy or a lighter payload.</source>
         <translation>Fartøyet er fortsatt %1 for tungt selv med alle lodd som kan tas ut, ute: det trenger mer oppdrift eller lettere nyttelast.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="57"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="61"/>
         <source>The search stopped at its limit: this is the best change found, not a proved optimum.</source>
         <translation>Søket stoppet ved grensen sin: dette er den beste endringen som ble funnet, ikke et bevist optimum.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="62"/>
         <source>The CG is not below the CB after the change: the vehicle would capsize. Check BG and the payload.</source>
         <translation>Tyngdepunktet er ikke under oppdriftssenteret etter endringen: fartøyet ville kantre. Kontroller BG og nyttelasten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="99"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="103"/>
         <source>The thesis mapping leaves the vehicle %1 heavy.</source>
         <translation>Oppgavens fordeling gjør fartøyet %1 for tungt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="242"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="255"/>
         <source>The net buoyancy band %1 to %2 cannot be reached with this kit; best %3</source>
         <translation>Båndet for netto oppdrift %1 til %2 kan ikke nås med dette vektsettet; beste er %3</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="244"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="257"/>
         <source>The pitch band ±%1 cannot be reached with this kit (at rest); best %2</source>
         <translation>Stampbåndet ±%1 kan ikke nås med dette vektsettet (i ro); beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="246"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="259"/>
         <source>The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet mens stampen holdes i båndet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="248"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="261"/>
         <source>The roll band ±%1 cannot be reached with this kit; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="250"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="263"/>
         <source>; flying level at %1 m/s it pitches %2°, inside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, innenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="251"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="264"/>
         <source>; flying level at %1 m/s it pitches %2°, outside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, utenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="254"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="267"/>
         <source>; out of reach whatever the piece sizes: the points&apos; capacities, the installed pieces and the higher priorities limit it</source>
         <translation>; utenfor rekkevidde uansett loddstørrelser: punktenes kapasitet, loddene som er montert og de høyere prioritetene begrenser det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="257"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="270"/>
         <source>; a %1 piece would reach it</source>
         <translation>; et lodd på %1 ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="259"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="272"/>
         <source>; no single extra piece size tried (%1) would reach it</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="261"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="274"/>
         <source>; no single extra piece size tried (%1) would reach it (some were not searched to the end)</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det (noen ble ikke søkt helt ut)</translation>
     </message>
@@ -661,262 +666,262 @@
 <context>
     <name>AdviceWord</name>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="133"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="137"/>
         <source>operating</source>
         <translation>operasjonsdybden</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="133"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="137"/>
         <source>deepest</source>
         <translation>største dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="134"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="138"/>
         <source>surface</source>
         <translation>overflaten</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="134"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="138"/>
         <source>transit</source>
         <translation>transitt</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="135"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="139"/>
         <source>none</source>
         <translation>ingen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="137"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="141"/>
         <source>depth command steps</source>
         <translation>trinn i dybdekommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="137"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="141"/>
         <source>pitch command steps</source>
         <translation>trinn i stampkommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="138"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
         <source>speed changes</source>
         <translation>fartsendringer</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="138"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
         <source>propeller speed changes</source>
         <translation>endringer i propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="141"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="145"/>
         <source>vertical-velocity error</source>
         <translation>avvik i vertikal hastighet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="141"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="145"/>
         <source>vertical-force error</source>
         <translation>avvik i vertikal kraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
         <source>pitch-moment error</source>
         <translation>avvik i stampmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
         <source>roll-moment error</source>
         <translation>avvik i rullmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="143"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
         <source>depth error</source>
         <translation>dybdeavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="143"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
         <source>pitch error</source>
         <translation>stampavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="144"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="148"/>
         <source>roll error</source>
         <translation>rullavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="144"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="148"/>
         <source>speed error</source>
         <translation>fartsavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="145"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="149"/>
         <source>surge-force error</source>
         <translation>avvik i langskipskraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="145"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="149"/>
         <source>error</source>
         <translation>avvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
         <source>pressure</source>
         <translation>trykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
         <source>temperature</source>
         <translation>temperatur</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
         <source>time</source>
         <translation>tid</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
         <source>speed</source>
         <translation>fart</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="148"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
         <source>propeller speed</source>
         <translation>propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="148"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="149"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
         <source>time since an actuator change</source>
         <translation>tid siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="149"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
         <source>100 dbar</source>
         <translation>100 dbar</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
         <source>degC</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
         <source>hour</source>
         <translation>time</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
         <source>0.1 m/s</source>
         <translation>0,1 m/s</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
         <source>100 rpm</source>
         <translation>100 o/min</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
         <source>10 deg of pitch</source>
         <translation>10° stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
         <source>10 s since an actuator change</source>
         <translation>10 s siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
         <source>below</source>
         <translation>under</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
         <source>above</source>
         <translation>over</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
         <source>after</source>
         <translation>etter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
         <source>before</source>
         <translation>før</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="160"/>
         <source>within</source>
         <translation>innenfor</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
         <source>surfaces</source>
         <translation>overflateopphold</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
         <source>dives</source>
         <translation>dykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
         <source>climbs</source>
         <translation>stigninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
         <source>levels</source>
         <translation>planflyvninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
         <source>turns</source>
         <translation>svinger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
         <source>starboard</source>
         <translation>styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
         <source>port</source>
         <translation>babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
         <source>port to the starboard</source>
         <translation>babord til styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
         <source>starboard to the port</source>
         <translation>styrbord til babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
         <source>lower to the upper</source>
         <translation>nedre til øvre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
         <source>upper to the lower</source>
         <translation>øvre til nedre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
         <source>lowers</source>
         <translation>senker</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
         <source>raises</source>
         <translation>hever</translation>
     </message>
@@ -1276,153 +1281,153 @@
 <context>
     <name>auv::ui::CalibrationTable</name>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="25"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="27"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="43"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="45"/>
         <source>Unit: %1</source>
         <translation>Enhet: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="53"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="55"/>
         <source>%1 = profile</source>
         <translation>%1 = profil</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="49"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="51"/>
         <source>%1 ± %2%3</source>
         <translation>%1 ± %2%3</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="50"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="52"/>
         <source>not known</source>
         <translation>ikke kjent</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="52"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="54"/>
         <source>not given</source>
         <translation>ikke oppgitt</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="68"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="70"/>
         <source>Calibrated constant</source>
         <translation>Kalibrert konstant</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="68"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="70"/>
         <source>Value ± σ</source>
         <translation>Verdi ± σ</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="68"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="70"/>
         <source>Profile</source>
         <translation>Profil</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="68"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="70"/>
         <source>From</source>
         <translation>Fra</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="79"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="81"/>
         <source>The vehicle constants fitted together with the ballast state. &quot;This log&quot;: the log narrowed it; &quot;stayed at the prior&quot;: the log could not tell, the profile&apos;s value and its uncertainty stand.</source>
         <translation>Fartøykonstantene tilpasset sammen med ballasttilstanden. «Denne loggen»: loggen snevret den inn; «ble ved forhåndsverdien»: loggen kunne ikke avgjøre det, og profilens verdi og usikkerhet står.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="88"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="90"/>
         <source>Nothing was calibrated: the profile&apos;s constants are used as they are.</source>
         <translation>Ingenting ble kalibrert: profilens konstanter brukes som de er.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="125"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="127"/>
         <source>Heave lift of the hull</source>
         <translation>Skrogets løft i hiv</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="126"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="128"/>
         <source>Heave force derivatives</source>
         <translation>Deriverte av hivkraften</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="127"/>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="128"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="129"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="130"/>
         <source>Pitch moment from heave (with the Munk moment)</source>
         <translation>Stampemoment fra hiv (med Munk-momentet)</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="129"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="131"/>
         <source>Cross-flow lift and moment</source>
         <translation>Tverrstrømsløft og -moment</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="130"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="132"/>
         <source>Cross-flow pitch moment</source>
         <translation>Tverrstrømmens stampemoment</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="131"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="133"/>
         <source>Stern-plane effectiveness</source>
         <translation>Virkningen av akterrorene</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="132"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="134"/>
         <source>Elevator zero offset</source>
         <translation>Nullpunktsavvik for dybderoret</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="133"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="135"/>
         <source>BG (CG below CB)</source>
         <translation>BG (CG under CB)</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="134"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="136"/>
         <source>Propeller torque</source>
         <translation>Propellmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="135"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="137"/>
         <source>Pitch damping</source>
         <translation>Stampedemping</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="136"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="138"/>
         <source>Roll damping</source>
         <translation>Rulledemping</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="137"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="139"/>
         <source>Surge drag</source>
         <translation>Motstand i lengderetningen</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="147"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="149"/>
         <source>this log</source>
         <translation>denne loggen</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="147"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="149"/>
         <source>stayed at the prior</source>
         <translation>ble ved forhåndsverdien</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="153"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="155"/>
         <source>%1: %2 (profile %3); %4</source>
         <translation>%1: %2 (profil %3); %4</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="168"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="170"/>
         <source>net buoyancy ± %1 kg</source>
         <translation>netto oppdrift ± %1 kg</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="169"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="171"/>
         <source>CG x ± %1 mm</source>
         <translation>CG x ± %1 mm</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="170"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="172"/>
         <source>Expected afterwards (1 σ): %1</source>
         <translation>Forventet etterpå (1 σ): %1</translation>
     </message>
@@ -1705,63 +1710,63 @@
 <context>
     <name>auv::ui::CraneSideView</name>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="14"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="16"/>
         <source>Side view, bow to the right: where each crane scale hangs and what it reads.</source>
         <translation>Sett fra siden, baugen til høyre: hvor hver kranvekt henger og hva den viser.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="52"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="54"/>
         <source>bow ▶</source>
         <translation>baug ▶</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="57"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="59"/>
         <source>CB</source>
         <translation>CB</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="64"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="66"/>
         <source>CG</source>
         <translation>CG</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="78"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="80"/>
         <source>hook: %1 kg</source>
         <translation>krok: %1 kg</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="87"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="89"/>
         <source>FS</source>
         <translation>FS</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="87"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="89"/>
         <source>FP</source>
         <translation>FB</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="88"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="90"/>
         <source>AS</source>
         <translation>AS</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="88"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="90"/>
         <source>AP</source>
         <translation>AB</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="97"/>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="98"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="99"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="100"/>
         <source>%1 %2 kg</source>
         <translation>%1 %2 kg</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="110"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="112"/>
         <source>Ropes at x = %1 m (fore) and %2 m (aft); starboard and port scales hang one behind the other.</source>
         <translation>Stropper ved x = %1 m (forut) og %2 m (akter); styrbord- og babordvekten henger bak hverandre.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/crane_side_view.cpp" line="113"/>
+        <location filename="../../ui/widgets/crane_side_view.cpp" line="115"/>
         <source>Enter where the ropes are: the fore rope&apos;s x must be forward of (greater than) the aft rope&apos;s.</source>
         <translation>Angi hvor tauene er: fremre taus x må ligge foran (være større enn) aktre taus.</translation>
     </message>
@@ -2390,27 +2395,27 @@
 <context>
     <name>auv::ui::GliderBallastMap</name>
     <message>
-        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="61"/>
+        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="63"/>
         <source>Side view (bow to the right, keel down)</source>
         <translation>Sett fra siden (baugen til høyre, kjølen ned)</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="62"/>
+        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="64"/>
         <source>Top view (bow to the right, starboard down)</source>
         <translation>Sett ovenfra (baugen til høyre, styrbord ned)</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="149"/>
+        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="151"/>
         <source>$C_VBD %1 → %2</source>
         <translation>$C_VBD %1 → %2</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="153"/>
+        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="155"/>
         <source>, $C_PITCH %1 → %2</source>
         <translation>, $C_PITCH %1 → %2</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="155"/>
+        <location filename="../../ui/widgets/glider_ballast_map.cpp" line="157"/>
         <source>The log does not tell where the grams go on this glider (see the notes).</source>
         <translation>Loggen sier ikke hvor grammene skal på denne glideren (se merknadene).</translation>
     </message>
@@ -3405,22 +3410,22 @@
 <context>
     <name>auv::ui::NumberInput</name>
     <message>
-        <location filename="../../ui/widgets/number_input.cpp" line="149"/>
+        <location filename="../../ui/widgets/number_input.cpp" line="147"/>
         <source>Enter a number.</source>
         <translation>Skriv inn et tall.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/number_input.cpp" line="151"/>
+        <location filename="../../ui/widgets/number_input.cpp" line="149"/>
         <source>&apos;%1&apos; is not a number.</source>
         <translation>«%1» er ikke et tall.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/number_input.cpp" line="153"/>
+        <location filename="../../ui/widgets/number_input.cpp" line="151"/>
         <source>The lowest accepted value is %1 %2.</source>
         <translation>Laveste godtatte verdi er %1 %2.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/number_input.cpp" line="155"/>
+        <location filename="../../ui/widgets/number_input.cpp" line="153"/>
         <source>The highest accepted value is %1 %2.</source>
         <translation>Høyeste godtatte verdi er %1 %2.</translation>
     </message>

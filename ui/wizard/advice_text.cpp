@@ -23,6 +23,7 @@ constexpr Advice kAdvice[] = {
   {"analysis.no_steady_glide", QT_TRANSLATE_NOOP("Advice", "No steady dive or climb long enough was found: nothing to estimate from.")},
   {"analysis.no_steady_level", QT_TRANSLATE_NOOP("Advice", "No steady level flight of at least %1 s was found: errors and estimates are not available.")},
   {"analysis.window_excluded", QT_TRANSLATE_NOOP("Advice", "%1: %2 interval(s), %3 s left out of the steady windows.")},
+  {"analysis.averaged_legs", QT_TRANSLATE_NOOP("Advice", "%1 leg(s) where the vehicle swung slowly up and down were averaged over whole swings.")},
   {"analysis.pitch_basis_glide", QT_TRANSLATE_NOOP("Advice", "measured minus commanded, during glides whose command has the phase's sign")},
   {"analysis.pitch_basis_level", QT_TRANSLATE_NOOP("Advice", "measured minus commanded, in steady level flight")},
   {"analysis.pitch_basis_no_command", QT_TRANSLATE_NOOP("Advice", "pitch at steady depth (the log has no commanded pitch; level flight should be at 0°)")},

@@ -202,6 +202,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   r.plan_pitch_deg = plan.flight_pitch_after_deg.value_or(plan.predicted.pitch_deg);
   r.plan_roll_deg = plan.predicted.roll_deg;
   const Flown f2 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after), err, seed * 7 + 2, after);
+  if (!dump_prefix.empty()) writeInterchangeCsv(f2.log, dump_prefix + "-2.csv");
   // Mission 2 analysed with mission 1 as history (the known move calibrates).
   analysis::AnalysisOptions a2;
   a2.log_name = "identification, second mission";

@@ -1,0 +1,41 @@
+#pragma once
+// Legs flown in a slow oscillation. Some vehicles never settle on a leg: the
+// depth autopilot limit-cycles with a period of several minutes (pitch
+// +-3..10 deg, depth within a metre or two of the command), so no window is
+// steady and the leg's speed would be lost to the estimation. Over whole
+// cycles of that oscillation the pitch rate and the heave and pitch
+// accelerations average to zero, so the leg's means satisfy the same steady
+// balance (auv_steady_model.h) to first order; the cycle-to-cycle spread of
+// the means is their honest uncertainty.
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "analysis/auv_steady_model.h"
+#include "analysis/segments.h"
+#include "analysis/statistics.h"
+
+namespace auv::analysis {
+
+// Averaged legs (kSteady segments with cycle_bounds_s filled) for the
+// constant-command legs of `log` that `steady` leaves mostly uncovered.
+// `command_cuts`: where a depth or pitch command stepped or the propeller
+// speed changed, already extended by the settling time. Returns them in
+// time order; `steady` windows inside an averaged leg are to be dropped.
+std::vector<Segment> averagedLegs(const MissionLog& log, const TimeSeries& depth,
+                                  const std::vector<TimeWindow>& command_cuts, const std::vector<Segment>& steady,
+                                  const SegmentOptions& o);
+
+// Mean of `s` over whole cycles: the sample mean over [bounds.front(),
+// bounds.back()], its standard error from the spread of the per-cycle means
+// (floored by the residual phase error of the cycle boundaries). NaN mean
+// when fewer than two cycles hold samples.
+MeanEstimate cycleMean(const TimeSeries& s, std::span<const double> bounds);
+
+// Means of the balance's products (auv_steady_model.h) over [bounds.front(),
+// bounds.back()] on the pitch channel's time base; needs `pitch` and `speed`
+// (roll 0 without `roll`, elevator 0 without `elevator`). nullopt without samples.
+std::optional<BalanceRegressors> cycleRegressors(const MissionLog& log, const TimeSeries& depth_rate,
+                                                 std::span<const double> bounds);
+
+}  // namespace auv::analysis

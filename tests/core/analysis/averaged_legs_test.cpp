@@ -1,0 +1,120 @@
+// Legs flown in a slow oscillation (averaged_legs.h): found, cut to whole
+// cycles, averaged with an honest standard error; steady legs keep their
+// steady windows; a data gap ends a leg.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "analysis/averaged_legs.h"
+#include "analysis/segments.h"
+#include "log_builder.h"
+
+namespace auv::analysis {
+namespace {
+
+using test::fill;
+using test::makeLog;
+
+constexpr double kPeriod_s = 420.0;
+constexpr double kPitch0_deg = -0.8, kPitchAmp_deg = 6.0;
+constexpr double kElev0_deg = -3.0, kElevAmp_deg = 9.0;
+
+// One 2 h leg at 40 m and 150 rpm; `amp` scales the oscillation (0 = steady).
+MissionLog legLog(double amp, std::uint32_t seed = 7) {
+  MissionLog log = makeLog(0.0, 7200.0, 1.0);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n01;
+  const double w = 2.0 * std::numbers::pi / kPeriod_s;
+  fill(log, "depth_cmd", "m", [](std::size_t, double) { return 40.0; });
+  // The depth lags the pitch by a quarter cycle (it integrates the climb rate).
+  fill(log, "depth", "m", [&](std::size_t, double t) { return 40.0 - amp * 0.8 * std::cos(w * t) + 0.02 * n01(rng); });
+  fill(log, "pitch", "deg", [&](std::size_t, double t) { return kPitch0_deg + amp * kPitchAmp_deg * std::sin(w * t) + 0.05 * n01(rng); });
+  fill(log, "elevator", "deg", [&](std::size_t, double t) { return kElev0_deg + amp * kElevAmp_deg * std::sin(w * t + 0.7) + 0.1 * n01(rng); });
+  fill(log, "speed", "m/s", [&](std::size_t, double) { return 1.8 + 0.01 * n01(rng); });
+  fill(log, "prop_rpm", "rpm", [](std::size_t, double) { return 150.0; });
+  fill(log, "roll", "deg", [&](std::size_t, double) { return 1.0 + 0.05 * n01(rng); });
+  return log;
+}
+
+TEST(AveragedLegs, AnOscillatingLegIsAveragedOverWholeCycles) {
+  const MissionLog log = legLog(1.0);
+  const Segmentation seg = detectSegments(log, SegmentOptions{});
+  ASSERT_EQ(seg.operating.size(), 1u) << "one averaged leg, no steady windows inside it";
+  const Segment& leg = seg.operating.front();
+  ASSERT_TRUE(leg.averaged());
+  const std::size_t cycles = leg.cycle_bounds_s.size() - 1;
+  EXPECT_GE(cycles, 12u);  // ~16 periods in the leg, minus settling
+  // Each cycle is one period of the oscillation (boundaries found to a few seconds).
+  for (std::size_t k = 0; k < cycles; ++k)
+    EXPECT_NEAR(leg.cycle_bounds_s[k + 1] - leg.cycle_bounds_s[k], kPeriod_s, 15.0) << "cycle " << k;
+  // The mean over whole cycles is the oscillation's centre; a plain mean over
+  // the leg would carry up to amp / (2 pi cycles) of a partial cycle.
+  const MeanEstimate p = cycleMean(log.series("pitch"), leg.cycle_bounds_s);
+  const MeanEstimate e = cycleMean(log.series("elevator"), leg.cycle_bounds_s);
+  EXPECT_NEAR(p.mean, kPitch0_deg, 0.05);
+  EXPECT_NEAR(e.mean, kElev0_deg, 0.08);
+  // The stated error covers the true one and is far below the swing.
+  EXPECT_GT(p.se, std::abs(p.mean - kPitch0_deg) / 3.0);
+  EXPECT_LT(p.se, 0.1);
+  bool noted = false;
+  for (const Message& m : seg.notes) noted = noted || m.id() == "analysis.averaged_legs";
+  EXPECT_TRUE(noted);
+}
+
+TEST(AveragedLegs, TheCycleMeansOfTheBalanceProductsAreNotTheProductsOfTheMeans) {
+  const MissionLog log = legLog(1.0);
+  const Segment leg = detectSegments(log, SegmentOptions{}).operating.front();
+  ASSERT_TRUE(leg.averaged());
+  const TimeSeries depth = log.series("depth");
+  const TimeSeries rate{depth.t, std::vector<double>(depth.size(), 0.0)};  // w from the pitch alone
+  const auto r = cycleRegressors(log, rate, leg.cycle_bounds_s);
+  ASSERT_TRUE(r.has_value());
+  // Oracle: w = u tan(theta) / cos(phi) over one period of the sinusoid, by quadrature.
+  const double u = 1.8, d2r = std::numbers::pi / 180.0;
+  double au_u_e = 0.0, u_w = 0.0;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i) {
+    const double ph = 2.0 * std::numbers::pi * (i + 0.5) / n;
+    const double th = (kPitch0_deg + kPitchAmp_deg * std::sin(ph)) * d2r;
+    u_w += u * u * std::tan(th) / std::cos(1.0 * d2r) / n;
+    au_u_e += u * u * (kElev0_deg + kElevAmp_deg * std::sin(ph + 0.7)) / n;
+  }
+  EXPECT_NEAR(r->u_w, u_w, 0.003 * std::abs(u_w) + 2e-4);
+  EXPECT_NEAR(r->au_u_e, au_u_e, 0.02 * std::abs(au_u_e));
+  // |w| w of a swing about a small mean is far from |w_mean| w_mean.
+  const double w_mean = u * std::tan(kPitch0_deg * d2r);
+  EXPECT_GT(std::abs(r->aw_w - std::abs(w_mean) * w_mean), 2.0 * std::abs(w_mean) * std::abs(w_mean));
+}
+
+TEST(AveragedLegs, ASteadyLegKeepsItsSteadyWindows) {
+  const MissionLog log = legLog(0.0);
+  const Segmentation seg = detectSegments(log, SegmentOptions{});
+  ASSERT_FALSE(seg.operating.empty());
+  for (const Segment& s : seg.operating) EXPECT_FALSE(s.averaged());
+}
+
+TEST(AveragedLegs, ADataGapEndsTheLeg) {
+  MissionLog log = legLog(1.0);
+  // Drop 10 min in the middle of the leg: the rows are gone, as in a real drop-out.
+  MissionLog cut;
+  cut.metadata = log.metadata;
+  std::vector<std::size_t> keep;
+  for (std::size_t i = 0; i < log.time.size(); ++i)
+    if (log.time[i] < 3000.0 || log.time[i] > 3600.0) keep.push_back(i);
+  for (std::size_t i : keep) cut.time.push_back(log.time[i]);
+  for (const LogChannel& c : log.channels) {
+    LogChannel& d = cut.addChannel(c.name, c.unit);
+    for (std::size_t j = 0; j < keep.size(); ++j) d.values[j] = c.values[keep[j]];
+  }
+  const Segmentation seg = detectSegments(cut, SegmentOptions{});
+  ASSERT_GE(seg.operating.size(), 2u);
+  for (const Segment& s : seg.operating) {
+    EXPECT_TRUE(s.averaged());
+    EXPECT_FALSE(s.start_s < 3000.0 && s.end_s > 3600.0) << s.start_s << " .. " << s.end_s;
+  }
+}
+
+}  // namespace
+}  // namespace auv::analysis
