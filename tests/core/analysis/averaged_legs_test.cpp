@@ -9,6 +9,8 @@
 
 #include "analysis/averaged_legs.h"
 #include "analysis/segments.h"
+#include "analysis/steady_segment_json.h"
+#include "common/input_error.h"
 #include "log_builder.h"
 
 namespace auv::analysis {
@@ -113,6 +115,30 @@ TEST(AveragedLegs, ADataGapEndsTheLeg) {
   for (const Segment& s : seg.operating) {
     EXPECT_TRUE(s.averaged());
     EXPECT_FALSE(s.start_s < 3000.0 && s.end_s > 3600.0) << s.start_s << " .. " << s.end_s;
+  }
+}
+
+TEST(AveragedLegs, HistoryRowsKeepTheCycleMeans) {
+  SteadySegmentMeans s;
+  s.start_s = 100.0;
+  s.end_s = 2000.0;
+  s.speed_mps.mean = 1.8;
+  s.speed_mps.n = 1900;
+  s.regressors = BalanceRegressors{0.99, -0.014, -0.05, -0.05, 0.031, 3.24, -9.7};
+  const nlohmann::json j = steadySegmentsJson({s, SteadySegmentMeans{}});
+  const std::vector<SteadySegmentMeans> back = steadySegmentsFromJson(j, "history.segments");
+  ASSERT_EQ(back.size(), 2u);
+  ASSERT_TRUE(back[0].regressors.has_value());
+  EXPECT_DOUBLE_EQ(back[0].regressors->aw_w, 0.031);
+  EXPECT_DOUBLE_EQ(back[0].regressors->au_u_e, -9.7);
+  EXPECT_FALSE(back[1].regressors.has_value());
+  nlohmann::json bad = j;
+  bad[0]["cycle_regressors"]["u_w"] = "x";
+  try {
+    steadySegmentsFromJson(bad, "history.segments");
+    FAIL() << "a damaged cycle mean was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("history.segments[0].cycle_regressors.u_w"), std::string::npos) << e.what();
   }
 }
 
