@@ -125,6 +125,9 @@ TransientFit::TransientFit(const MissionLog& log, const sim::VehicleModel& nomin
     if (!filled(pcmd, r0, r1, fc) || !filled(rpm, r0, r1, fr) || !filled(speed, r0, r1, fs) ||
         !filled(depth, r0, r1, fd) || !filled(pitch, r0, r1, fp))
       continue;
+    // Near the surface the hull breaks it (waves, partial buoyancy): not the
+    // submerged model the replay integrates.
+    if (*std::min_element(fd.begin(), fd.end()) < ctx.min_depth_m) continue;
     const bool ctd = has_ctd && filled(temp, r0, r1, fT) && filled(sal, r0, r1, fS);
     const bool has_p = filled(pres, r0, r1, fP);
     if (!filled(roll, r0, r1, fphi)) fphi.assign(t.size(), 0.0);

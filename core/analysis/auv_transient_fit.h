@@ -27,6 +27,7 @@ struct TransientFitContext {
   double extra_Iyy_kgm2 = 0.0;    // of the installed adjustment weights about the CB
   double window_before_s = 15.0, window_after_s = 75.0;
   std::size_t max_windows = 24;  // spread evenly over the log (bounds the time on long logs)
+  double min_depth_m = 3.0;      // windows that come shallower are left out (the surface)
   double dt_s = 0.1;             // model step
   // The vehicle's autopilot (profile): its stern-plane loop (eq. 27) tracks
   // the logged pitch command, so the noisy logged elevator is compared as an

@@ -126,6 +126,26 @@ std::vector<Segment> averagedLegs(const MissionLog& log, const TimeSeries& depth
   return out;
 }
 
+std::vector<Segment> auvSteadyGlides(const MissionLog& log, const std::vector<Segment>& phases,
+                                     const std::vector<TimeWindow>& command_cuts, const SegmentOptions& o) {
+  std::vector<Segment> out;
+  if (!log.has("pitch")) return out;
+  const TimeSeries pitch = log.series("pitch");
+  std::vector<TimeWindow> vertical;
+  for (const Segment& p : phases)
+    if ((p.kind == SegmentKind::kDive || p.kind == SegmentKind::kClimb) && p.start_s + 2 * o.settle_s < p.end_s)
+      vertical.push_back({p.start_s + o.settle_s, p.end_s - o.settle_s});
+  for (const TimeWindow& w : subtractWindows(vertical, command_cuts)) {
+    if (w.duration() < o.auv_glide_min_s) continue;
+    if (!(sdOf(smoothedIn(pitch, w.start_s, w.end_s).v) <= o.auv_glide_max_pitch_sd_deg)) continue;
+    SegmentKind phase = SegmentKind::kDive;
+    for (const Segment& p : phases)
+      if (p.start_s <= w.start_s && w.end_s <= p.end_s) phase = p.kind;
+    out.push_back({SegmentKind::kGlide, w.start_s, w.end_s, phase, {}});
+  }
+  return out;
+}
+
 MeanEstimate cycleMean(const TimeSeries& s, std::span<const double> bounds) {
   MeanEstimate m;
   if (bounds.size() < 3) return m;

@@ -53,8 +53,14 @@ struct WindowStats {
   MeanAccumulator all;
   std::size_t last = static_cast<std::size_t>(-1);
   explicit WindowStats(std::size_t n) : per(n) {}
-  void add(std::size_t w, double x) {
+  // in_all = false: the window's own mean only (an AUV's steady dive or
+  // climb estimates the trim but is not "at steady depth").
+  void add(std::size_t w, double x, bool in_all = true) {
     if (std::isnan(x)) return;
+    if (!in_all) {
+      per[w].add(x);
+      return;
+    }
     if (w != last) {
       all.endBlock();
       last = w;
@@ -112,8 +118,11 @@ struct WaterResult {
 // Water properties on the CTD's own time base inside the windows (and deeper
 // than min_depth_m). Salinity from the log, else PSS-78 from conductivity;
 // density from the log, else EOS-80 in situ at the sample's pressure.
+// in_overall (optional, one per window): false = the window gets its own
+// water but does not count in the overall (operating-depth) means.
 WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& win, const TimeSeries& depth,
-                            double latitude, double min_depth_m, SeriesModel model) {
+                            double latitude, double min_depth_m, SeriesModel model,
+                            const std::vector<bool>* in_overall = nullptr) {
   WaterResult out;
   const bool hasT = hasSamples(log, "temperature"), hasS = hasSamples(log, "salinity"),
              hasC = hasSamples(log, "conductivity"), hasP = hasSamples(log, "pressure"),
@@ -139,14 +148,18 @@ WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& w
     if (std::isnan(p) && !std::isnan(z)) p = seawater::pressureFromDepth(std::clamp(z, 0.0, 10600.0), latitude);
     if (std::isnan(z) && !std::isnan(p)) z = seawater::depthFromPressure(std::clamp(p, 0.0, 11000.0), latitude);
     if (!(z >= min_depth_m)) return;
+    const bool all = !in_overall || (*in_overall)[w];
     if (w != last) {
       for (MeanAccumulator* a : {&aT, &aS, &aR, &aP, &aZ}) a->endBlock();
       last = w;
     }
-    aZ.add(z);
-    if (!std::isnan(p)) aP.add(p), nP[w] += 1, sP_[w] += p;
+    if (all) aZ.add(z);
+    if (!std::isnan(p)) {
+      if (all) aP.add(p);
+      nP[w] += 1, sP_[w] += p;
+    }
     if (!hasT) {  // density-only log
-      aR.add(v);
+      if (all) aR.add(v);
       nR[w] += 1, sR_[w] += v;
       return;
     }
@@ -158,9 +171,9 @@ WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& w
           inRange(p, seawater::kPressureRange))
         S = seawater::salinityFromConductivity(C, T, p);
     }
-    aT.add(T);
+    if (all) aT.add(T);
     nT[w] += 1, sT[w] += T;
-    if (!std::isnan(S)) aS.add(S);
+    if (!std::isnan(S) && all) aS.add(S);
     double rho = hasRho ? cR.at(t) : kNaN;
     if (!hasRho) {
       if (inRange(S, seawater::kSalinityRange) && inRange(T, seawater::kTemperatureRange) &&
@@ -169,7 +182,10 @@ WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& w
       else
         ++out.skipped;
     }
-    if (!std::isnan(rho)) aR.add(rho), nR[w] += 1, sR_[w] += rho;
+    if (!std::isnan(rho)) {
+      if (all) aR.add(rho);
+      nR[w] += 1, sR_[w] += rho;
+    }
   });
   auto meanOf = [](const std::vector<double>& n, const std::vector<double>& sum) {
     std::vector<double> m(n.size(), kNaN);
@@ -216,19 +232,22 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
   // --- per-window statistics, one channel at a time --------------------------
   WindowStats zS(nw), zRate(nw), dErr(nw), pitch(nw), pErr(nw), roll(nw), speed(nw), rpm(nw), elev(nw);
   const TimeSeries depthRate{depth.t, localRate(depth, so.rate_window_s, so.max_gap_s)};
+  // An AUV's steady dives and climbs (averaged_legs.h) feed the estimation,
+  // not the depth and pitch errors at steady depth.
+  auto atDepth = [&](std::size_t w) { return glider || win[w].kind != SegmentKind::kGlide; };
   {
     std::size_t i = 0;
     forEachInWindows(depth, win, [&](std::size_t w, double t, double z) {
       while (depth.t[i] < t) ++i;
-      zS.add(w, z);
-      zRate.add(w, depthRate.v[i]);
+      zS.add(w, z, atDepth(w));
+      zRate.add(w, depthRate.v[i], atDepth(w));
     });
   }
   const bool hasDepthCmd = hasSamples(log, "depth_cmd");
   if (hasDepthCmd) {
     const TimeSeries c = log.series("depth_cmd");
     SeriesCursor cur(c, true, kInf);
-    forEachInWindows(depth, win, [&](std::size_t w, double t, double z) { dErr.add(w, cur.at(t) - z); });
+    forEachInWindows(depth, win, [&](std::size_t w, double t, double z) { dErr.add(w, cur.at(t) - z, atDepth(w)); });
   }
   const bool hasPitchCmd = hasSamples(log, "pitch_cmd");
   if (hasSamples(log, "pitch")) {
@@ -236,13 +255,13 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     const TimeSeries c = hasPitchCmd ? log.series("pitch_cmd") : TimeSeries{};
     SeriesCursor cur(c, true, kInf);
     forEachInWindows(p, win, [&](std::size_t w, double t, double x) {
-      pitch.add(w, x);
+      pitch.add(w, x, atDepth(w));
       if (!hasPitchCmd) return;
       const double cmd = cur.at(t);
       // A glider's pitch command belongs to one phase (dive < 0, climb > 0).
       if (glider && !((win[w].phase == SegmentKind::kDive && cmd < 0) || (win[w].phase == SegmentKind::kClimb && cmd > 0)))
         return;
-      pErr.add(w, x - cmd);
+      pErr.add(w, x - cmd, atDepth(w));
     });
   }
   simpleStats(log, "roll", win, roll);
@@ -272,9 +291,16 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
       if (p.kind != SegmentKind::kSurface) waterWin.push_back(p);
     if (glider) waterMinDepth = o.glider_min_depth_m;
   }
+  // An AUV's reference water is that of its legs at depth; its steady dives
+  // and climbs keep their own water (unless there is nothing else).
+  std::vector<bool> atDepthMask;
+  for (std::size_t w = 0; w < win.size() && !glider; ++w) atDepthMask.push_back(atDepth(w));
+  const bool maskWater = !glider && !win.empty() &&
+                         std::find(atDepthMask.begin(), atDepthMask.end(), true) != atDepthMask.end();
   // Gliders profile through the water column: its stratification is signal.
   const WaterResult water = waterProperties(log, waterWin, depth, latitude, waterMinDepth,
-                                            glider ? SeriesModel::kProfile : SeriesModel::kStationary);
+                                            glider ? SeriesModel::kProfile : SeriesModel::kStationary,
+                                            maskWater ? &atDepthMask : nullptr);
   rep.temperature_degC = water.T;
   rep.salinity_psu = water.S;
   rep.density_kgm3 = water.rho;

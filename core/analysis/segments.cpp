@@ -240,8 +240,13 @@ Segmentation detectSegments(const MissionLog& log, const SegmentOptions& o) {
   }
   for (const TimeWindow& w : subtractWindows(level, mergeWindows(std::move(cut))))
     if (w.duration() >= o.min_steady_s) seg.operating.push_back({SegmentKind::kSteady, w.start_s, w.end_s, SegmentKind::kLevel, {}});
+  command_cut = mergeWindows(std::move(command_cut));
+  if (o.auv_steady_glides)
+    for (Segment& g : auvSteadyGlides(log, seg.phases, command_cut, o)) seg.operating.push_back(std::move(g));
+  std::sort(seg.operating.begin(), seg.operating.end(),
+            [](const Segment& a, const Segment& b) { return a.start_s < b.start_s; });
   if (!o.average_oscillating_legs) return seg;
-  const std::vector<Segment> legs = averagedLegs(log, depth, mergeWindows(std::move(command_cut)), seg.operating, o);
+  const std::vector<Segment> legs = averagedLegs(log, depth, command_cut, seg.operating, o);
   if (legs.empty()) return seg;
   // Steady windows inside an averaged leg would count its data twice.
   std::erase_if(seg.operating, [&](const Segment& s) {

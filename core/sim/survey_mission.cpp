@@ -109,6 +109,9 @@ SurveyMission makeSurveyMission(std::uint64_t seed, const SurveyRanges& r) {
   n.pressure_dbar = 0.02;
   m.options.trace_interval_s = r.trace_interval_s;
   m.options.seed = rng();
+  // A vehicle that cannot hold depth broaches and lies at the surface, as a
+  // real one would, instead of flying on through it.
+  m.options.surface_model = true;
   return m;
 }
 

@@ -118,6 +118,33 @@ TEST(AveragedLegs, ADataGapEndsTheLeg) {
   }
 }
 
+// A vehicle that cannot hold its depth: 20 min sinking at a steady -12 deg
+// with the elevator at its stop, constant commands.
+TEST(AveragedLegs, ASteadySinkIsAGlideOutsideTheErrorsAtDepth) {
+  MissionLog log = makeLog(0.0, 3000.0, 1.0);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n01;
+  auto depth = [](double t) { return t < 600.0 ? 40.0 : 40.0 + 0.35 * (t - 600.0); };
+  fill(log, "depth_cmd", "m", [](std::size_t, double) { return 40.0; });
+  fill(log, "depth", "m", [&](std::size_t, double t) { return depth(t) + 0.02 * n01(rng); });
+  fill(log, "pitch", "deg", [&](std::size_t, double t) { return (t < 600.0 ? 0.5 : -12.0) + 0.05 * n01(rng); });
+  fill(log, "elevator", "deg", [&](std::size_t, double t) { return (t < 600.0 ? -3.0 : 25.0) + 0.1 * n01(rng); });
+  fill(log, "speed", "m/s", [&](std::size_t, double) { return 1.6 + 0.01 * n01(rng); });
+  fill(log, "prop_rpm", "rpm", [](std::size_t, double) { return 130.0; });
+  const Segmentation seg = detectSegments(log, SegmentOptions{});
+  const Segment* glide = nullptr;
+  for (const Segment& s : seg.operating)
+    if (s.kind == SegmentKind::kGlide) glide = &s;
+  ASSERT_NE(glide, nullptr);
+  EXPECT_EQ(glide->phase, SegmentKind::kDive);
+  EXPECT_GE(glide->duration(), 2000.0);
+  EXPECT_GE(glide->start_s, 600.0);
+  // Switched off, the sink is not used.
+  SegmentOptions off;
+  off.auv_steady_glides = false;
+  for (const Segment& s : detectSegments(log, off).operating) EXPECT_NE(s.kind, SegmentKind::kGlide);
+}
+
 TEST(AveragedLegs, HistoryRowsKeepTheCycleMeans) {
   SteadySegmentMeans s;
   s.start_s = 100.0;

