@@ -21,7 +21,10 @@
 #include "identification_harness.h"
 #include "sim/sim_log.h"
 #include "sim/simulator.h"
+#include "vehicle/json_reader.h"
 #include "vehicle/profile_loader.h"
+#include "sim/truth_draw.h"
+#include <fstream>
 
 namespace {
 
@@ -81,6 +84,11 @@ int main(int argc, char** argv) {
     else if (a == "--verbose") verbose = true;
     else if (a == "--log-interval" && i + 1 < argc) log_interval_s = std::atof(argv[++i]);
     else if (a == "--transients") transients = true;
+    else if (a == "--truth-doc" && i + 2 < argc) {  // --truth-doc SEED FILE: the truth's hydrodynamics companion
+      const nlohmann::json nominal = JsonReader::parseFile(std::string(AUV_RESOURCE_DIR) + "/sim/hugin1000_hydrodynamics.json");
+      std::ofstream(argv[i + 2]) << sim::truthHydrodynamicsDoc(nominal, sim::drawTruth(std::strtoull(argv[i + 1], nullptr, 10))).dump(1) << "\n";
+      return 0;
+    }
     else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: logs (first, -2 second) and report of one truth
       const identification::Harness h;
       const auto r = h.run(std::strtoull(argv[i + 1], nullptr, 10), true, argv[i + 2]);

@@ -289,16 +289,19 @@ SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, do
   // Without planes their columns are zero: pin them with a tight prior.
   if (!c.has_planes) pr.sigma(kPlanes) = pr.sigma(kPlaneOffset) = 1e-9;
 
-  Eigen::VectorXd p = pr.mean;
-  Solved s;
-  for (int pass = 0; pass < 3; ++pass) {  // the measurement covariance depends on p
-    s = solve(c, W, rho_ref, segs, pr, p);
-    if (!s.ok) return out;
-    p = s.p;
-  }
+  // The measurement covariance of each segment's residuals depends on p (the
+  // elevator's error counts s_e times); it is taken at the prior mean and
+  // held. Re-weighting at the solution and solving again is not a descent
+  // of any one objective: on logs with few speeds it walked the planes'
+  // effectiveness towards zero, where the elevator's noise weighs nothing
+  // (identification truth 2123: s_e 0.30 after three passes, 0.09 after
+  // twelve, against 1.03; docs/decisions/analysis-calibration.md).
+  const Solved s = solve(c, W, rho_ref, segs, pr, pr.mean);
+  if (!s.ok) return out;
   out.ok = true;
   out.p = s.p;
   out.cov = s.cov;
+  out.weights_at = pr.mean;
   out.data_parameters = (s.cov * s.data_info).trace();
   const double dof = s.n_data - out.data_parameters;
   out.chi2_per_dof = dof > 0.5 ? s.chi2_data / dof : 0.0;
@@ -358,7 +361,8 @@ Eigen::MatrixXd covarianceAfter(const SteadyHydroCoefficients& c, double W, doub
   Eigen::Matrix<double, 2, kCalibrationCount> A;
   Eigen::Vector2d b;
   for (const CalibrationSegment& s : planned) {
-    const Eigen::Matrix2d C = segmentCovariance(c, W, rho_ref, s, cal.p);
+    // Weighted as the calibration weighs its own segments.
+    const Eigen::Matrix2d C = segmentCovariance(c, W, rho_ref, s, cal.weights_at.size() ? cal.weights_at : cal.p);
     rowsOf(c, W, rho_ref, s, s.v, A, b);
     info += A.transpose() * C.inverse() * A;
   }

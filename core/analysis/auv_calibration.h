@@ -73,6 +73,7 @@ struct SteadyCalibration {
   bool ok = false;
   Eigen::VectorXd p;    // CalibrationIndex order; net in N, x_G and BG in m, c in deg
   Eigen::MatrixXd cov;
+  Eigen::VectorXd weights_at;  // where the segments' measurement covariance was evaluated (the prior mean)
   double chi2_per_dof = 0.0;
   double data_parameters = 0.0;  // effective number of parameters the data determined
   std::vector<CalibrationParameter> parameters;  // hydrodynamic groups only

@@ -216,16 +216,27 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     out.y_why = Message(msg::kCgYNeedsBg, {fmt("%+.2f", out.roll_static_deg)});
     return;
   }
-  const double bg = *ctx.bg_measured_m;
-  auto yOf = [bg](double roll_deg, double sigma_deg, double& y, double& y_sigma) {
+  const double bg = *ctx.bg_measured_m, bg_sigma = ctx.bg_measured_sigma_m;
+  // y = BG tan(roll): the roll test's BG error scales y as much as the roll's does.
+  auto yOf = [bg, bg_sigma](double roll_deg, double sigma_deg, double& y, double& y_sigma) {
     const double t = std::tan(units::degToRad(roll_deg));
     y = bg * t;
-    y_sigma = std::abs(bg) * (1.0 + t * t) * units::degToRad(sigma_deg);
+    y_sigma = std::hypot(std::abs(bg) * (1.0 + t * t) * units::degToRad(sigma_deg), bg_sigma * t);
   };
   yOf(out.roll_static_deg, out.roll_static_sigma_deg, out.y_m, out.y_sigma_m);
   out.y_identified = true;
   if (out.cruise_known) {
-    yOf(out.cruise_roll_deg, out.cruise_roll_sigma_deg, out.y_cruise_m, out.y_cruise_sigma_m);
+    // The heeling moment at cruise, W BG sin(phi) = W y cos(phi) + Q, as the
+    // CG y that would heel the vehicle as much at zero roll: y + Q / W. Zeroing
+    // it levels the vehicle in cruise; BG tan(phi) would overshoot by
+    // (Q / W)(1 / cos(phi) - 1), a degree at the 18 deg a strong torque gives.
+    // The static y is known where the torque was fitted; otherwise the roll
+    // is taken as torque (the y (1 - cos) term is second order).
+    const double phi = units::degToRad(out.cruise_roll_deg);
+    const double y_static = out.y_basis.rfind("static (propeller", 0) == 0 ? out.y_m : 0.0;
+    out.y_cruise_m = bg * std::sin(phi) + y_static * (1.0 - std::cos(phi));
+    out.y_cruise_sigma_m = std::hypot(std::abs(bg * std::cos(phi)) * units::degToRad(out.cruise_roll_sigma_deg),
+                                      bg_sigma * std::sin(phi));
     out.y_cruise_identified = true;
   }
 }

@@ -145,8 +145,12 @@ TEST(SimulateCli, SimulateThenAnalyzeRecoversTheBallastError) {
   EXPECT_LT(k["net_buoyancy_sigma_kg"].get<double>(), 0.5 * j["net_buoyancy_sigma_kg"].get<double>());
   // Roll at cruise (160 rpm) and the CG y that levels the vehicle there.
   EXPECT_GT(k["cruise"]["prop_rpm"].get<double>(), 150.0);
-  const double roll = k["cruise"]["roll_deg"].get<double>();
-  EXPECT_NEAR(k["cruise"]["cg_y_mm"].get<double>(), 20.0 * std::tan(roll * std::numbers::pi / 180.0), 1e-6);
+  // The heeling moment at cruise as a CG y at zero roll: BG sin(roll) plus
+  // y (1 - cos(roll)) when the torque fit separated the static y.
+  const double roll = k["cruise"]["roll_deg"].get<double>() * std::numbers::pi / 180.0;
+  const bool fitted = k["cg_offset_y_basis"].get<std::string>().rfind("static (propeller", 0) == 0;
+  const double y_static = fitted ? k["cg_offset_mm"]["y"].get<double>() : 0.0;
+  EXPECT_NEAR(k["cruise"]["cg_y_mm"].get<double>(), 20.0 * std::sin(roll) + y_static * (1.0 - std::cos(roll)), 1e-5);
   const auto bad = runCli("analyze --vehicle " + profile_path + " --log " + log + " --coefficient-sigma 10%");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("coefficient-sigma"), std::string::npos) << bad.err;
