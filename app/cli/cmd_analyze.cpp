@@ -27,6 +27,7 @@ struct AnalyzeOpts {
   std::string cache_dir, vehicle, installed, bg_mm, coefficient_sigma, json;
   TargetFlags target;
   bool no_classic = false;
+  bool transients = false;
 };
 
 int runAnalyze(const AnalyzeOpts& o) {
@@ -53,6 +54,7 @@ int runAnalyze(const AnalyzeOpts& o) {
     a.coefficient_rel_sigma = r;
   }
   a.classic = !o.no_classic;
+  a.use_transients = o.transients;
 
   ReadReport readReport;
   const MissionLog log = readLogArgument(o.log, logReadOptions(o.cache_dir), readReport);
@@ -109,6 +111,10 @@ Command addAnalyzeCommand(CLI::App& app) {
                   "AUVs: prior 1-sigma of each group of the profile's hydrodynamic derivatives in the calibration "
                   "(default 0.30 with the Munk structure unknown; 0.02 once known, e.g. from a tow tank)");
   cmd->add_flag("--no-classic", o->no_classic, "Skip the thesis's App. D checks (reported under details.classic)");
+  cmd->add_flag("--transients", o->transients,
+                "AUVs: also fit the depth-step and propeller-speed transients through the simulator, jointly with "
+                "the steady legs (details.transient_windows). For logs of 5 Hz or faster: at 1 Hz the replay misses "
+                "command steps and the CG x sigma is too narrow");
   cmd->add_option("--json", o->json, "Write the JSON report here ('-' = stdout instead of text)");
   return {cmd, [o]() { return runAnalyze(*o); }};
 }

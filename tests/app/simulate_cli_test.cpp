@@ -156,6 +156,37 @@ TEST(SimulateCli, SimulateThenAnalyzeRecoversTheBallastError) {
   EXPECT_NE(bad.err.find("coefficient-sigma"), std::string::npos) << bad.err;
 }
 
+// --transients: on a 10 Hz log the depth steps and rpm changes, flown again
+// through the profile's simulator, join the steady legs: windows are used,
+// the truth stays within 2 sigma and the sigma is no wider than the legs'.
+TEST(SimulateCli, AnalyzeWithTransientsFitsTheStepsOfATenHertzLog) {
+  const std::string res = AUV_RESOURCE_DIR;
+  nlohmann::json profile = nlohmann::json::parse(slurp(res + "/vehicles/hugin1000.json"));
+  const nlohmann::json hydro = nlohmann::json::parse(slurp(res + "/sim/hugin1000_hydrodynamics.json"));
+  for (const char* k : {"hydrodynamics", "actuators", "sim_assumptions", "autopilot"}) profile[k] = hydro[k];
+  nlohmann::json plan = nlohmann::json::parse(slurp(res + "/examples/hugin1000_ballast_error.plan.json"));
+  plan["options"]["trace_interval_s"] = 0.1;
+  // Depth steps at the propeller-speed changes: transients to fit.
+  plan["legs"][1]["depth_m"] = 56.0;
+  plan["legs"][2]["depth_m"] = 44.0;
+  const std::string profile_path = tmp("hugin1000_sim.json"), plan_path = tmp("be10.plan.json"), log = tmp("be10.csv");
+  std::ofstream(profile_path) << profile.dump(2);
+  std::ofstream(plan_path) << plan.dump(2);
+  ASSERT_EQ(runCli("simulate --plan " + plan_path + " --out " + log).code, 0);
+  const std::string base = "analyze --vehicle " + profile_path + " --log " + log + " --installed 7.2,7.2,25.2,25.2 --json -";
+  const auto steady = runCli(base), joint = runCli(base + " --transients");
+  ASSERT_EQ(steady.code, 0) << steady.err;
+  ASSERT_EQ(joint.code, 0) << joint.err;
+  const nlohmann::json a = nlohmann::json::parse(steady.out), b = nlohmann::json::parse(joint.out);
+  EXPECT_FALSE(a["details"].contains("transient_windows"));
+  ASSERT_TRUE(b["details"].contains("transient_windows"));
+  EXPECT_GE(b["details"]["transient_windows"].get<int>(), 2);
+  const MissionLog truth = readInterchangeCsv(log);
+  const double nb = meta(truth, "truth_net_buoyancy_mean_kg");
+  EXPECT_NEAR(b["net_buoyancy_kg"].get<double>(), nb, 2.0 * b["net_buoyancy_sigma_kg"].get<double>());
+  EXPECT_LE(b["net_buoyancy_sigma_kg"].get<double>(), a["net_buoyancy_sigma_kg"].get<double>() * 1.001);
+}
+
 TEST(SimulateCli, GliderPlanWritesGliderChannels) {
   const std::string res = AUV_RESOURCE_DIR, out = tmp("glider.csv");
   const auto r = runCli("simulate --plan " + res + "/examples/slocum_g2_yo.plan.json --ballast-error 0.05,0 --out " + out);
