@@ -83,6 +83,19 @@ inline constexpr MessageFormat kNoElevator{
 inline constexpr MessageFormat kHistoryCalibration{
     "analysis.history_calibration",
     "calibrated with %1 steady segments of earlier missions of this configuration and the known weight changes since"};
+inline constexpr MessageFormat kThrusterSegmentsLeftOut{
+    "analysis.thruster_segments_left_out",
+    "%1 steady segment(s) left out: the tunnel thrusters ran there (up to %2 rpm), and the steady balance has no "
+    "thruster term (the model check replays them)"};
+inline constexpr MessageFormat kThrustersInEverySegment{
+    "analysis.thrusters_in_every_segment",
+    AUV_NOT_ID "the tunnel thrusters ran in all %1 steady segment(s) (up to %2 rpm) and carry an unknown part of the "
+    "net buoyancy, which the steady balance has no term for; fly steady legs above the thrusters' hand-over speed, "
+    "or use the model check, which replays them"};
+inline constexpr MessageFormat kTransientsDropped{
+    "analysis.transients_dropped",
+    "the depth steps and speed changes disagreed among themselves more than they added (net buoyancy +- %1 kg with "
+    "them, +- %2 kg from the steady segments alone): the estimate is the steady segments'"};
 inline constexpr MessageFormat kDegenerate{
     "analysis.degenerate",
     AUV_NOT_ID "the steady segments do not determine the heave and pitch balance (degenerate geometry)"};
@@ -114,7 +127,7 @@ inline constexpr const MessageFormat* kAll[] = {
     &kNoDepthCommand, &kCtdOutOfRange, &kNoDensity, &kGliderCgX, &kGliderCgY, &kNoPumpVolume, &kNoPitch, &kNoSteadyDiveOrClimb, &kFewGlideSamples,
     &kLogMassDiffers, &kGliderFitNotConverged, &kGliderDefaultConstants, &kGliderDefaultCompressibility,
     &kNoRollSamples, &kNoPropRpm, &kOneCruiseRpm, &kCgYNeedsBg, &kNoSteadyLevelSegment, &kNoSpeed, &kNoSpeedAndPitch,
-    &kNoElevator, &kHistoryCalibration, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
+    &kNoElevator, &kHistoryCalibration, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
     &kPosteriorSigmas, &kPosteriorSigmasMunk, &kBgFromProfile};
 
 }  // namespace auv::analysis::msg

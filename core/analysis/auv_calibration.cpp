@@ -46,24 +46,27 @@ void rowsOf(const SteadyHydroCoefficients& c, double W, double rho_ref, const Ca
 
 // Covariance of a segment's two balance residuals (heave force, pitch
 // moment) from the standard errors of its five means, by central
-// differences at the parameters p.
+// differences at the parameters p. The residuals are linear in p, r = A(v) p
+// - b(v), so a mean's error e_j moves them by d_j = D_j p - db_j. With p
+// uncertain (mean p, covariance diag(p_sigma^2)) the expected covariance is
+// sum_j d_j d_j' + D_j diag(p_sigma^2) D_j'.
 template <class P>
 Eigen::Matrix2d segmentCovariance(const SteadyHydroCoefficients& c, double W, double rho_ref,
-                                  const CalibrationSegment& s, const P& p) {
-  auto resid = [&](const std::array<double, 5>& v) {
-    Eigen::Matrix<double, 2, kCalibrationCount> Ai;
-    Eigen::Vector2d bi;
-    rowsOf(c, W, rho_ref, s, v, Ai, bi, true);
-    return Eigen::Vector2d(Ai * p - bi);
-  };
+                                  const CalibrationSegment& s, const P& p, const Eigen::VectorXd* p_sigma = nullptr) {
   Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
+  Eigen::Matrix<double, 2, kCalibrationCount> Ahi, Alo;
+  Eigen::Vector2d bhi, blo;
   for (int j = 0; j < 5; ++j) {
     if (!(s.se[j] > 0.0)) continue;
     std::array<double, 5> hi = s.v, lo = s.v;
     hi[j] += s.se[j];
     lo[j] -= s.se[j];
-    const Eigen::Vector2d d = 0.5 * (resid(hi) - resid(lo));
+    rowsOf(c, W, rho_ref, s, hi, Ahi, bhi, true);
+    rowsOf(c, W, rho_ref, s, lo, Alo, blo, true);
+    const Eigen::Matrix<double, 2, kCalibrationCount> D = 0.5 * (Ahi - Alo);
+    const Eigen::Vector2d d = D * p - 0.5 * (bhi - blo);
     C += d * d.transpose();
+    if (p_sigma) C += D * p_sigma->cwiseAbs2().asDiagonal() * D.transpose();
   }
   C(0, 0) += 1e-6;  // 1 mN, 1 mN m floors: a noise-free segment keeps a finite weight
   C(1, 1) += 1e-6;
@@ -93,7 +96,7 @@ Solved solve(const SteadyHydroCoefficients& c, double W, double rho_ref, const s
   Eigen::Vector2d b;
   for (Eigen::Index i = 0; i < n; ++i) {
     const CalibrationSegment& s = segs[static_cast<std::size_t>(i)];
-    const Eigen::Matrix2d C = segmentCovariance(c, W, rho_ref, s, p0);
+    const Eigen::Matrix2d C = segmentCovariance(c, W, rho_ref, s, p0, &pr.sigma);
     const Eigen::Matrix2d Linv = Eigen::Matrix2d(C.llt().matrixL()).inverse();
     rowsOf(c, W, rho_ref, s, s.v, A, b);
     At.middleRows(2 * i, 2) = Linv * A;
@@ -258,6 +261,17 @@ void fitTransients(const Solved& s, const TransientResiduals& tr, double steady_
     out.cov += jk;
     out.transient_jackknife_net_sigma_n = std::sqrt(std::max(0.0, jk(kNet, kNet)));
   }
+  out.transient_net_sigma_n = std::sqrt(std::max(0.0, out.cov(kNet, kNet)));
+  // Windows that disagree more than they inform (the jackknife's spread
+  // larger than their information) would widen what the steady segments
+  // already know: the steady answer stands.
+  if (out.cov(kNet, kNet) > cov_steady(kNet, kNet) || out.cov(kXg, kXg) > cov_steady(kXg, kXg)) {
+    out.p = s.p;
+    out.cov = cov_steady;
+    out.transients_kept = false;
+  } else {
+    out.transients_kept = true;
+  }
   out.transient_residuals = static_cast<std::size_t>(rt.size());
   out.transient_chi2_per_residual = chi2;
   out.transient_inflation = inflation_used;
@@ -290,18 +304,23 @@ SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, do
   if (!c.has_planes) pr.sigma(kPlanes) = pr.sigma(kPlaneOffset) = 1e-9;
 
   // The measurement covariance of each segment's residuals depends on p (the
-  // elevator's error counts s_e times); it is taken at the prior mean and
-  // held. Re-weighting at the solution and solving again is not a descent
-  // of any one objective: on logs with few speeds it walked the planes'
-  // effectiveness towards zero, where the elevator's noise weighs nothing
-  // (identification truth 2123: s_e 0.30 after three passes, 0.09 after
-  // twelve, against 1.03; docs/decisions/analysis-calibration.md).
+  // elevator's error counts s_e times). It is the expectation over the
+  // prior, at its mean with its spread (segmentCovariance), and held.
+  // At the prior mean alone the pair's covariance can be nearly singular
+  // (pitch and elevator noise move both residuals along one line), and the
+  // fit trusted that combination beyond what the unknown coefficients allow:
+  // identification truth 2123 came out 3.6 sigma off. Re-weighting at the
+  // solution and solving again is no cure, and not a descent of any one
+  // objective: on logs with few speeds it walked the planes' effectiveness
+  // towards zero, where the elevator's noise weighs nothing
+  // (docs/decisions/analysis-calibration.md).
   const Solved s = solve(c, W, rho_ref, segs, pr, pr.mean);
   if (!s.ok) return out;
   out.ok = true;
   out.p = s.p;
   out.cov = s.cov;
   out.weights_at = pr.mean;
+  out.weights_sigma = pr.sigma;
   out.data_parameters = (s.cov * s.data_info).trace();
   const double dof = s.n_data - out.data_parameters;
   out.chi2_per_dof = dof > 0.5 ? s.chi2_data / dof : 0.0;
@@ -362,7 +381,9 @@ Eigen::MatrixXd covarianceAfter(const SteadyHydroCoefficients& c, double W, doub
   Eigen::Vector2d b;
   for (const CalibrationSegment& s : planned) {
     // Weighted as the calibration weighs its own segments.
-    const Eigen::Matrix2d C = segmentCovariance(c, W, rho_ref, s, cal.weights_at.size() ? cal.weights_at : cal.p);
+    const Eigen::Matrix2d C =
+        cal.weights_at.size() ? segmentCovariance(c, W, rho_ref, s, cal.weights_at, &cal.weights_sigma)
+                              : segmentCovariance(c, W, rho_ref, s, cal.p);
     rowsOf(c, W, rho_ref, s, s.v, A, b);
     info += A.transpose() * C.inverse() * A;
   }

@@ -73,7 +73,9 @@ struct SteadyCalibration {
   bool ok = false;
   Eigen::VectorXd p;    // CalibrationIndex order; net in N, x_G and BG in m, c in deg
   Eigen::MatrixXd cov;
-  Eigen::VectorXd weights_at;  // where the segments' measurement covariance was evaluated (the prior mean)
+  // The segments' measurement covariance is the expectation over the prior
+  // (mean weights_at, sigmas weights_sigma) of the parameter-dependent one.
+  Eigen::VectorXd weights_at, weights_sigma;
   double chi2_per_dof = 0.0;
   double data_parameters = 0.0;  // effective number of parameters the data determined
   std::vector<CalibrationParameter> parameters;  // hydrodynamic groups only
@@ -83,6 +85,10 @@ struct SteadyCalibration {
   std::size_t transient_residuals = 0;
   double transient_chi2_per_residual = 0.0, transient_inflation = 1.0;
   double transient_jackknife_net_sigma_n = 0.0;  // the windows' scatter, added to the posterior
+  double transient_net_sigma_n = 0.0;            // net buoyancy sigma with the transients
+  // false: with their scatter the transients knew less than the steady
+  // segments (a wider net buoyancy or CG x sigma), and p, cov are the steady ones.
+  bool transients_kept = false;
 };
 
 // Nominal linear pitch-moment derivative m_uw at density rho for a Munk factor.

@@ -241,9 +241,16 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
   }
 }
 
-// Three 5-min legs at 130/160/190 rpm at one depth, flown as the calibrated
-// model predicts, with the measurement noise of this log's segments scaled
-// to 5 min: the sigmas after adding them to this log.
+// The manoeuvre: a descent and a climb of 30 m at 160 rpm at a steady
+// 0.25 m/s, plus 5-min level legs at 130/160/190 rpm at one depth when the
+// log has fewer than three speeds; flown as the calibrated model predicts,
+// with this log's measurement noise scaled to their length: the sigmas
+// after adding them to this log. A climb and a descent fly the hull at
+// another angle of attack at the same speed, which separates hull lift
+// from plane lift and both from the net buoyancy; more level speeds do
+// not (in level flight trim angle and elevator change together with
+// speed): on the drawn identification truths three more level legs left
+// a 1.5 kg sigma at 1.5 kg, the climb and descent brought it to 0.17.
 std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoefficients& nominal, const Model& m,
                                                         const SteadyCalibration& cal, const std::vector<Meas>& meas,
                                                         std::span<const SteadySegmentMeans> segments,
@@ -253,18 +260,28 @@ std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoeffic
   // Speed per rpm and noise per segment from this log.
   double su = 0.0, sn = 0.0, dur = 0.0;
   std::array<double, 5> se{};
+  std::vector<double> rpms;
   for (std::size_t j = 0; j < meas.size(); ++j) {
     const SteadySegmentMeans& g = segments[seg_index[j]];
-    if (g.prop_rpm.valid() && g.prop_rpm.mean > 1.0) su += g.speed_mps.mean, sn += g.prop_rpm.mean;
+    if (g.prop_rpm.valid() && g.prop_rpm.mean > 1.0) {
+      su += g.speed_mps.mean, sn += g.prop_rpm.mean;
+      if (std::none_of(rpms.begin(), rpms.end(), [&](double r) { return std::abs(r - g.prop_rpm.mean) < 5.0; }))
+        rpms.push_back(g.prop_rpm.mean);
+    }
     dur += g.end_s - g.start_s;
     for (int k = 0; k < 5; ++k) se[static_cast<std::size_t>(k)] += meas[j].se[static_cast<std::size_t>(k)];
   }
   if (!(sn > 0.0)) return std::nullopt;
   const double per_rpm = su / sn, mean_dur = dur / static_cast<double>(meas.size());
-  for (double& x : se) x *= std::sqrt(mean_dur / 300.0) / static_cast<double>(meas.size());
+  for (double& x : se) x /= static_cast<double>(meas.size());
+  auto scaledTo = [&](double seconds) {
+    std::array<double, 5> out = se;
+    for (double& x : out) x *= std::sqrt(mean_dur / seconds);
+    return out;
+  };
   AuvTrimEstimate::Manoeuvre man;
   std::vector<CalibrationSegment> planned;
-  for (double rpm : {130.0, 160.0, 190.0}) {
+  auto add = [&](double rpm, double depth_rate_mps, double seconds) {
     LevelFlightInput in;
     in.weight_n = m.W;
     in.buoyancy_n = m.W + cal.p(kNet);
@@ -272,16 +289,27 @@ std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoeffic
     in.bg_m = cal.p(kBg);
     in.speed_mps = per_rpm * rpm;
     in.density_kgm3 = m.rho;
+    in.depth_rate_mps = depth_rate_mps;
     const LevelFlight f = solveLevelFlight(*est.calibrated, in);
-    if (!f.ok) continue;
+    if (!f.ok) return false;
     CalibrationSegment c;
-    c.v = {in.speed_mps, f.pitch_rad, 0.0, f.elevator_deg + est.elevator_bias_deg, 0.0};
-    c.se = se;
+    c.v = {in.speed_mps, f.pitch_rad, 0.0, f.elevator_deg + est.elevator_bias_deg, depth_rate_mps};
+    c.se = scaledTo(seconds);
     c.density_kgm3 = m.rho;
     planned.push_back(c);
-    man.legs.push_back("5 min level at " + fmt("%.0f", rpm) + " rpm (about " + fmt("%.1f", in.speed_mps) +
-                       " m/s) at the operating depth");
+    return true;
+  };
+  if (rpms.size() < 3) {
+    for (double rpm : {130.0, 160.0, 190.0})
+      if (add(rpm, 0.0, 300.0))
+        man.legs.push_back("5 min level at " + fmt("%.0f", rpm) + " rpm (about " + fmt("%.1f", per_rpm * rpm) +
+                           " m/s) at the operating depth");
   }
+  constexpr double kRate = 0.25, kDepthChange = 30.0;
+  if (add(160.0, kRate, kDepthChange / kRate) && add(160.0, -kRate, kDepthChange / kRate))
+    man.legs.push_back("descend " + fmt("%.0f", kDepthChange) + " m at 160 rpm (about " + fmt("%.1f", per_rpm * 160.0) +
+                       " m/s) at a steady " + fmt("%.2f", kRate) +
+                       " m/s, then climb back the same way (2 min each; the steady middle of each counts)");
   if (planned.empty()) return std::nullopt;
   const Eigen::MatrixXd cov = covarianceAfter(nominal, m.W, m.rho, cal, planned);
   man.net_sigma_kg = std::sqrt(cov(kNet, kNet)) / units::g0;
@@ -312,15 +340,31 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
   const bool use_elevator = coeffs->has_planes && ctx.log_has_elevator;
   std::vector<Meas> meas;
   std::vector<std::size_t> seg_index;
+  std::size_t thrust_left_out = 0;
+  double thrust_rpm = 0.0;
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const auto& s = segments[i];
     if (!s.speed_mps.valid() || !s.pitch_deg.valid()) continue;
     if (use_elevator && !s.elevator_deg.valid()) continue;
+    if (s.thruster_rpm > 0.0) {
+      ++thrust_left_out;
+      thrust_rpm = std::max(thrust_rpm, s.thruster_rpm);
+      continue;
+    }
     meas.push_back(measOf(s, use_elevator));
     seg_index.push_back(i);
   }
   out.segment_net_buoyancy_kg.assign(segments.size(), kNaN);
   out.segment_x_m.assign(segments.size(), kNaN);
+  if (thrust_left_out > 0) {
+    const Message m(meas.empty() ? msg::kThrustersInEverySegment : msg::kThrusterSegmentsLeftOut,
+                    {std::to_string(thrust_left_out), fmt("%.0f", thrust_rpm)});
+    if (meas.empty()) {
+      notIdentifiable(m);
+      return out;
+    }
+    out.notes.push_back(m);
+  }
   if (meas.empty()) {
     notIdentifiable(Message(msg::kNoSpeedAndPitch));
     return out;
@@ -415,6 +459,9 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     notIdentifiable(Message(msg::kDegenerate));
     return out;
   }
+  if (cal.transient_residuals > 0 && !cal.transients_kept)
+    out.notes.push_back(Message(msg::kTransientsDropped, {fmt("%.2f", cal.transient_net_sigma_n / units::g0),
+                                                          fmt("%.2f", std::sqrt(cal.cov(kNet, kNet)) / units::g0)}));
   out.chi2_per_dof = cal.chi2_per_dof;
   out.buoyancy_identified = out.x_identified = true;
   out.net_buoyancy_kg = cal.p(kNet) / units::g0;

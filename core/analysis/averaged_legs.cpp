@@ -32,16 +32,32 @@ TimeSeries smoothedIn(const TimeSeries& s, double a, double b) {
   return out;
 }
 
+struct MeanSd {
+  double mean = 0.0, sd = 0.0;
+};
+
+// Mean and sample standard deviation (0 with fewer than two values).
+MeanSd meanSdOf(const std::vector<double>& v) {
+  MeanSd r;
+  if (v.empty()) return r;
+  for (double x : v) r.mean += x;
+  r.mean /= static_cast<double>(v.size());
+  if (v.size() < 2) return r;
+  double m2 = 0.0;
+  for (double x : v) m2 += (x - r.mean) * (x - r.mean);
+  r.sd = std::sqrt(m2 / static_cast<double>(v.size() - 1));
+  return r;
+}
+
+double sdOf(const std::vector<double>& v) { return meanSdOf(v).sd; }
+
 // Upward crossings of the signal's mean with hysteresis; cycles shorter than
 // min_period_s are merged into the next.
 std::vector<double> upCrossings(const TimeSeries& x, double min_period_s) {
   std::vector<double> out;
   if (x.size() < 4) return out;
-  double m = 0.0, m2 = 0.0;
-  for (double v : x.v) m += v;
-  m /= static_cast<double>(x.size());
-  for (double v : x.v) m2 += (v - m) * (v - m);
-  const double h = kHysteresis * std::sqrt(m2 / static_cast<double>(x.size()));
+  const MeanSd ms = meanSdOf(x.v);
+  const double m = ms.mean, h = kHysteresis * ms.sd;
   if (!(h > 0.0)) return out;
   int state = 0;  // -1 below m - h, +1 above m + h
   double last_cross = kNaN;
@@ -56,15 +72,6 @@ std::vector<double> upCrossings(const TimeSeries& x, double min_period_s) {
     }
   }
   return out;
-}
-
-double sdOf(const std::vector<double>& v) {
-  if (v.size() < 2) return 0.0;
-  double m = 0.0, m2 = 0.0;
-  for (double x : v) m += x;
-  m /= static_cast<double>(v.size());
-  for (double x : v) m2 += (x - m) * (x - m);
-  return std::sqrt(m2 / static_cast<double>(v.size() - 1));
 }
 
 double overlap(const std::vector<Segment>& w, double a, double b) {

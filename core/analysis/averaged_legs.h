@@ -26,9 +26,10 @@ std::vector<Segment> averagedLegs(const MissionLog& log, const TimeSeries& depth
                                   const std::vector<TimeWindow>& command_cuts, const std::vector<Segment>& steady,
                                   const SegmentOptions& o);
 
-// Long steady dives and climbs of an AUV that cannot hold its depth (the
-// elevator at its stop, the vehicle sinking or rising at a constant pitch):
-// constant commands, a steady pitch, at least `o.auv_glide_min_s`. The
+// Steady dives and climbs of an AUV: the pitch-limited middle of a depth
+// change, or a vehicle that cannot hold its depth (the elevator at its
+// stop, sinking or rising at a constant pitch): constant commands, a
+// steady pitch, at least `o.auv_glide_min_s`. The
 // steady balance holds there with w from the depth rate (auv_steady_model.h).
 // kGlide segments with `phase` kDive or kClimb.
 std::vector<Segment> auvSteadyGlides(const MissionLog& log, const std::vector<Segment>& phases,

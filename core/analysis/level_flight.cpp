@@ -16,13 +16,13 @@ struct Balance {
 
   double elevatorFor(double theta) const {
     const double u = in.speed_mps;
-    const SteadyFlight f{u, theta, in.roll_rad, 0.0, 0.0, in.density_kgm3};
+    const SteadyFlight f{u, theta, in.roll_rad, 0.0, in.depth_rate_mps, in.density_kgm3};
     const HydroLoads h = steadyHydroLoads(c, f);
     const double cc = std::cos(theta) * std::cos(in.roll_rad);
     return ((in.buoyancy_n - in.weight_n) * cc - h.Z()) / (c.Z_e_per_deg * std::abs(u) * u);
   }
   double momentResidual(double theta) const {
-    const SteadyFlight f{in.speed_mps, theta, in.roll_rad, elevatorFor(theta), 0.0, in.density_kgm3};
+    const SteadyFlight f{in.speed_mps, theta, in.roll_rad, elevatorFor(theta), in.depth_rate_mps, in.density_kgm3};
     const HydroLoads h = steadyHydroLoads(c, f);
     const double cc = std::cos(theta) * std::cos(in.roll_rad);
     return in.weight_n * (in.bg_m * std::sin(theta) + in.x_g_m * cc) - h.M();

@@ -17,6 +17,7 @@ struct LevelFlightInput {
   double speed_mps = 0.0;
   double density_kgm3 = 1025.0;
   double roll_rad = 0.0;
+  double depth_rate_mps = 0.0;  // positive descending; 0 = level flight
 };
 
 struct LevelFlight {

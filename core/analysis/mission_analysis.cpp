@@ -17,6 +17,8 @@
 #include "analysis/series_tools.h"
 #include "analysis/statistics.h"
 #include "analysis/steady_segment_json.h"
+#include "analysis/water_at_depth.h"
+#include "analysis/window_samples.h"
 #include "common/input_error.h"
 #include "common/units.h"
 #include "seawater/seawater.h"
@@ -35,15 +37,6 @@ std::string fmt(const char* f, double v) {
   char buf[128];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
-}
-
-bool hasSamples(const MissionLog& log, const char* name, std::size_t min = 1) {
-  const LogChannel* c = log.find(name);
-  if (!c) return false;
-  std::size_t n = 0;
-  for (double v : c->values)
-    if (!std::isnan(v) && ++n >= min) return true;
-  return false;
 }
 
 // Per-window and overall accumulators for one quantity; the overall one
@@ -71,18 +64,6 @@ struct WindowStats {
   MeanEstimate at(std::size_t w) const { return per[w].result(); }
 };
 
-// f(window index, time, value) for every sample of s inside the windows.
-template <class F>
-void forEachInWindows(const TimeSeries& s, const std::vector<Segment>& win, F&& f) {
-  std::size_t w = 0;
-  for (std::size_t i = 0; i < s.size() && w < win.size(); ++i) {
-    const double t = s.t[i];
-    while (w < win.size() && t > win[w].end_s) ++w;
-    if (w == win.size()) break;
-    if (t >= win[w].start_s) f(w, t, s.v[i]);
-  }
-}
-
 // An averaged leg's means over its whole oscillation cycles, with the
 // cycle-to-cycle spread as their standard errors (averaged_legs.h).
 void averageOverCycles(const MissionLog& log, const Segment& leg, const TimeSeries& depth_rate, SteadySegmentMeans& m) {
@@ -105,102 +86,32 @@ void simpleStats(const MissionLog& log, const char* channel, const std::vector<S
   forEachInWindows(s, win, [&](std::size_t w, double, double v) { st.add(w, v); });
 }
 
-bool inRange(double v, const seawater::ValidRange& r) { return v >= r.min && v <= r.max; }
-
-struct WaterResult {
-  MeanEstimate T, S, rho, p, z;
-  // Per window (NaN where the window has no CTD sample): the segment's own water.
-  std::vector<double> win_rho, win_T, win_p;
-  std::string salinity_source, density_source;
-  std::size_t skipped = 0;
-};
-
-// Water properties on the CTD's own time base inside the windows (and deeper
-// than min_depth_m). Salinity from the log, else PSS-78 from conductivity;
-// density from the log, else EOS-80 in situ at the sample's pressure.
-// in_overall (optional, one per window): false = the window gets its own
-// water but does not count in the overall (operating-depth) means.
-WaterResult waterProperties(const MissionLog& log, const std::vector<Segment>& win, const TimeSeries& depth,
-                            double latitude, double min_depth_m, SeriesModel model,
-                            const std::vector<bool>* in_overall = nullptr) {
-  WaterResult out;
-  const bool hasT = hasSamples(log, "temperature"), hasS = hasSamples(log, "salinity"),
-             hasC = hasSamples(log, "conductivity"), hasP = hasSamples(log, "pressure"),
-             hasRho = hasSamples(log, "density");
-  const char* base = hasT ? "temperature" : (hasRho ? "density" : nullptr);
-  if (!base) return out;
-  const TimeSeries b = log.series(base);
-  const TimeSeries sS = hasS ? log.series("salinity") : TimeSeries{};
-  const TimeSeries sC = hasC ? log.series("conductivity") : TimeSeries{};
-  const TimeSeries sP = hasP ? log.series("pressure") : TimeSeries{};
-  const TimeSeries sR = hasRho && hasT ? log.series("density") : TimeSeries{};
-  const double gap = 60.0;
-  SeriesCursor cS(sS, false, gap), cC(sC, false, gap), cP(sP, false, gap), cR(sR, false, gap), cZ(depth, false, gap);
-  MeanAccumulator aT, aS, aR, aP, aZ;
-  std::vector<double> nR(win.size(), 0.0), sR_(win.size(), 0.0), nT(win.size(), 0.0), sT(win.size(), 0.0),
-      nP(win.size(), 0.0), sP_(win.size(), 0.0);
-  std::size_t last = static_cast<std::size_t>(-1);
-  out.salinity_source = hasS ? "log" : (hasC ? "PSS-78 from conductivity" : "");
-  out.density_source = hasRho ? "log" : "EOS-80 from temperature, salinity and pressure";
-  forEachInWindows(b, win, [&](std::size_t w, double t, double v) {
-    double p = hasP ? cP.at(t) : kNaN;
-    double z = cZ.at(t);
-    if (std::isnan(p) && !std::isnan(z)) p = seawater::pressureFromDepth(std::clamp(z, 0.0, 10600.0), latitude);
-    if (std::isnan(z) && !std::isnan(p)) z = seawater::depthFromPressure(std::clamp(p, 0.0, 11000.0), latitude);
-    if (!(z >= min_depth_m)) return;
-    const bool all = !in_overall || (*in_overall)[w];
-    if (w != last) {
-      for (MeanAccumulator* a : {&aT, &aS, &aR, &aP, &aZ}) a->endBlock();
-      last = w;
-    }
-    if (all) aZ.add(z);
-    if (!std::isnan(p)) {
-      if (all) aP.add(p);
-      nP[w] += 1, sP_[w] += p;
-    }
-    if (!hasT) {  // density-only log
-      if (all) aR.add(v);
-      nR[w] += 1, sR_[w] += v;
-      return;
-    }
-    const double T = v;
-    double S = hasS ? cS.at(t) : kNaN;
-    if (std::isnan(S) && hasC) {
-      const double C = cC.at(t);
-      if (inRange(C, seawater::kConductivityRange) && C > 0 && inRange(T, seawater::kTemperatureRange) &&
-          inRange(p, seawater::kPressureRange))
-        S = seawater::salinityFromConductivity(C, T, p);
-    }
-    if (all) aT.add(T);
-    nT[w] += 1, sT[w] += T;
-    if (!std::isnan(S) && all) aS.add(S);
-    double rho = hasRho ? cR.at(t) : kNaN;
-    if (!hasRho) {
-      if (inRange(S, seawater::kSalinityRange) && inRange(T, seawater::kTemperatureRange) &&
-          inRange(p, seawater::kPressureRange))
-        rho = seawater::density(S, T, p);
-      else
-        ++out.skipped;
-    }
-    if (!std::isnan(rho)) {
-      if (all) aR.add(rho);
-      nR[w] += 1, sR_[w] += rho;
-    }
-  });
-  auto meanOf = [](const std::vector<double>& n, const std::vector<double>& sum) {
-    std::vector<double> m(n.size(), kNaN);
-    for (std::size_t i = 0; i < n.size(); ++i)
-      if (n[i] > 0) m[i] = sum[i] / n[i];
-    return m;
-  };
-  out.win_rho = meanOf(nR, sR_);
-  out.win_T = meanOf(nT, sT);
-  out.win_p = meanOf(nP, sP_);
-  out.T = aT.result(model);
-  out.S = aS.result(model);
-  out.rho = aR.result(model);
-  out.p = aP.result(model);
-  out.z = aZ.result(model);
+// Per window: the largest mean |rpm| of the tunnel-thruster channels when it
+// is above the thrusters' deadband (the profile's, 0 without a simulator
+// model), else 0.
+std::vector<double> thrusterRpmAboveDeadband(const MissionLog& log, const VehicleProfile& v,
+                                             const std::vector<Segment>& win) {
+  std::vector<double> out(win.size(), 0.0);
+  const char* channels[] = {"thruster_front_rpm", "thruster_aft_rpm"};
+  if (!hasSamples(log, channels[0]) && !hasSamples(log, channels[1])) return out;
+  double deadband = 0.0;
+  try {
+    const sim::VehicleModel m = sim::loadVehicleModel(v);
+    for (int i = 0; i < m.thruster_count; ++i) deadband = std::max(deadband, m.thrusters[static_cast<std::size_t>(i)].deadband_rpm);
+  } catch (const std::exception&) {
+    // No simulator sections: any running thruster counts.
+  }
+  for (const char* c : channels) {
+    if (!hasSamples(log, c)) continue;
+    std::vector<double> sum(win.size(), 0.0), n(win.size(), 0.0);
+    forEachInWindows(log.series(c), win, [&](std::size_t w, double, double x) {
+      if (std::isnan(x)) return;
+      sum[w] += std::abs(x);
+      n[w] += 1.0;
+    });
+    for (std::size_t w = 0; w < win.size(); ++w)
+      if (n[w] > 0 && sum[w] / n[w] > deadband) out[w] = std::max(out[w], sum[w] / n[w]);
+  }
   return out;
 }
 
@@ -298,7 +209,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
   const bool maskWater = !glider && !win.empty() &&
                          std::find(atDepthMask.begin(), atDepthMask.end(), true) != atDepthMask.end();
   // Gliders profile through the water column: its stratification is signal.
-  const WaterResult water = waterProperties(log, waterWin, depth, latitude, waterMinDepth,
+  const WaterAtDepth water = waterProperties(log, waterWin, depth, latitude, waterMinDepth,
                                             glider ? SeriesModel::kProfile : SeriesModel::kStationary,
                                             maskWater ? &atDepthMask : nullptr);
   rep.temperature_degC = water.T;
@@ -332,8 +243,10 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     const double Tref = water.T.valid() ? water.T.mean : v.hull.reference_temperature_degC;
     const double pref = water.p.valid() ? water.p.mean : 0.0;
     const double Bref = rho * v.hull.volumeAt(Tref, pref);  // kg
+    const std::vector<double> thrusterRpm = thrusterRpmAboveDeadband(log, v, win);
     for (std::size_t w = 0; w < nw; ++w) {
       means[w] = {win[w].start_s, win[w].end_s, speed.at(w), pitch.at(w), roll.at(w), elev.at(w), zRate.at(w), rpm.at(w)};
+      means[w].thruster_rpm = thrusterRpm[w];
       if (win[w].averaged()) averageOverCycles(log, win[w], depthRate, means[w]);
       if (perWindowWater && std::isfinite(water.win_rho[w])) {
         const double Ti = std::isfinite(water.win_T[w]) ? water.win_T[w] : Tref;

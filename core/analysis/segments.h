@@ -21,7 +21,8 @@ enum class SegmentKind {
   kLevel,    // depth rate within the level band
   kSteady,   // AUV: steady level flight inside a level phase (used for estimation)
   kGlide,    // the steady part of a dive or climb (used for estimation): a glider's glides, an
-             // AUV's long dives and climbs when it cannot hold depth (averaged_legs.h)
+             // AUV's pitch-limited depth changes and the dives of one that cannot hold depth
+             // (averaged_legs.h)
 };
 const char* toString(SegmentKind kind);
 
@@ -66,9 +67,13 @@ struct SegmentOptions {
   double average_min_period_s = 60.0;  // faster "cycles" are noise
   double average_max_steady_cover = 0.5;  // legs mostly covered by steady windows keep those ...
   double average_min_swing_deg = 1.0;     // ... unless the smoothed pitch swings by this sd
-  // Steady dives and climbs of an AUV that cannot hold depth (averaged_legs.h).
+  // Steady dives and climbs of an AUV (averaged_legs.h): the pitch-limited
+  // middle of a depth change (40-90 s at +-15 deg on a HUGIN survey), or a
+  // vehicle that cannot hold depth. At the same speed they fly a different
+  // angle of attack from level flight, which separates hull lift from
+  // stern-plane lift and both from the net buoyancy.
   bool auv_steady_glides = true;
-  double auv_glide_min_s = 300.0;
+  double auv_glide_min_s = 40.0;
   double auv_glide_max_pitch_sd_deg = 1.5;
   // Glides: trimmed at both ends (inflection, pump and battery moves).
   double glide_trim_s = 30.0;

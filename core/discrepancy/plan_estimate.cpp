@@ -12,16 +12,17 @@ bool usable(double value, double sigma) { return std::isfinite(value) && std::is
 PlanEstimate planEstimate(const analysis::AnalysisReport& analysis, const ModelCheckResult* check,
                           const std::vector<std::string>& accepted_terms) {
   PlanEstimate out{analysis, EstimateSource::kAnalysis};
-  if (!check || accepted_terms.empty() || analysis.vehicle_kind == "glider") return out;
+  if (!check || analysis.vehicle_kind == "glider") return out;
   bool any = false;
   for (const auto& m : check->missing_physics)
     for (const auto& id : accepted_terms) any = any || m.id == id;
-  if (!any || !usable(check->net_buoyancy_kg, check->net_buoyancy_sigma_kg)) return out;
+  const bool replay_only = !any && !analysis.net_buoyancy_kg.known;
+  if ((!any && !replay_only) || !usable(check->net_buoyancy_kg, check->net_buoyancy_sigma_kg)) return out;
   analysis::EstimatedValue& net = out.report.net_buoyancy_kg;
   net = {true, check->net_buoyancy_kg, check->net_buoyancy_sigma_kg, ""};
   if (check->has_cg && usable(check->cg_x_mm, check->cg_x_sigma_mm))
     out.report.cg_x_mm = {true, check->cg_x_mm, check->cg_x_sigma_mm, ""};
-  out.source = EstimateSource::kModelCheck;
+  out.source = replay_only ? EstimateSource::kModelCheckReplay : EstimateSource::kModelCheck;
   return out;
 }
 

@@ -13,6 +13,7 @@ namespace auv::discrepancy {
 enum class EstimateSource {
   kAnalysis,    // calibrated from this log by the analysis
   kModelCheck,  // the model check's joint fit with the terms the technician accepted
+  kModelCheckReplay,  // the model check's fit of the whole log, where the analysis's steady flight could not tell
 };
 
 struct PlanEstimate {
@@ -28,6 +29,9 @@ struct PlanEstimate {
 // without a positive finite sigma is not adopted. Otherwise: the analysis.
 // The check's joint fit holds every term it accepted; unticking some (not
 // all) keeps that fit, and the source says the accepted terms are in it.
+// Without accepted terms, where the analysis did not identify the net
+// buoyancy (e.g. Delphin2's tunnel thrusters ran in every steady segment)
+// and the check's replay did: the check's fit (kModelCheckReplay).
 PlanEstimate planEstimate(const analysis::AnalysisReport& analysis, const ModelCheckResult* check,
                           const std::vector<std::string>& accepted_terms);
 

@@ -64,6 +64,15 @@ PlanStart planStartFromReport(const VehicleProfile& v, const nlohmann::json& rep
     return s;
   }
   if (policy != PlanPolicy::Classic) {
+    // An analysis says why it could not tell; a report without it (e.g.
+    // deviations imported from a thesis ballasting file) never had one.
+    const auto ni = report.find("not_identifiable");
+    if (ni != report.end() && ni->is_object() && ni->contains("net_buoyancy_kg") &&
+        (*ni)["net_buoyancy_kg"].is_string()) {
+      throw InputError("report.net_buoyancy_kg",
+                       report_name + ": the net buoyancy is " + (*ni)["net_buoyancy_kg"].get<std::string>(),
+                       "plan from the model check's estimate of the same log, or use the classic policy");
+    }
     throw InputError("report.net_buoyancy_kg",
                      report_name + " has no net buoyancy (e.g. deviations imported from a thesis ballasting file)",
                      "use the classic policy, or analyse the mission log ('auvballast analyze') and plan from that "

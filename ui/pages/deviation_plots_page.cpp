@@ -326,7 +326,7 @@ void DeviationPlotsPage::showAnalysis() {
   QString source;
   if (e) {
     source = EstimateText::planUses(e->source);
-    if (e->source == discrepancy::EstimateSource::kModelCheck)
+    if (e->source != discrepancy::EstimateSource::kAnalysis)
       source += " " + tr("This log's analysis alone: net buoyancy %1.")
                           .arg(EstimateText::of(state_.analysis->net_buoyancy_kg, state_.isGlider() ? 3 : 2, tr(" kg")));
   }

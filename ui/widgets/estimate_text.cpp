@@ -33,9 +33,16 @@ int EstimateText::decimalsFor(double sigma, int decimals, int max) {
 }
 
 QString EstimateText::planUses(discrepancy::EstimateSource source) {
-  return source == discrepancy::EstimateSource::kModelCheck
-             ? tr("The plan uses the estimate with the model-check terms you accepted.")
-             : tr("The plan uses the estimate calibrated from this log.");
+  switch (source) {
+    case discrepancy::EstimateSource::kModelCheck:
+      return tr("The plan uses the estimate with the model-check terms you accepted.");
+    case discrepancy::EstimateSource::kModelCheckReplay:
+      return tr("The plan uses the model check's fit of the whole log: the steady flight alone did not identify "
+                "the ballast state.");
+    case discrepancy::EstimateSource::kAnalysis:
+      break;
+  }
+  return tr("The plan uses the estimate calibrated from this log.");
 }
 
 bool EstimateText::pitchKnown(const PreMissionPlan& p) {

@@ -129,10 +129,15 @@ TEST(ClassicThesis, ToleranceBandsKeepWorkingWhereExactTestsFail) {
   EXPECT_LT(r.pitch_error_deg.mean + r.pitch_error_deg.ci95, 0.0);
   EXPECT_NEAR(r.roll_deg.mean, 0.74, 0.05);
   EXPECT_GT(r.roll_deg.mean - r.roll_deg.ci95, 0.0);
-  // Three steady legs (one per command), not a 40-60 % window.
-  int legs = 0;
-  for (const auto& s : r.segments) legs += s.used;
+  // Three steady legs (one per command), not a 40-60 % window; the depth
+  // changes between them count as glides (kGlide), not as legs at depth.
+  int legs = 0, glides = 0;
+  for (const auto& s : r.segments) {
+    legs += s.used && s.kind == SegmentKind::kSteady;
+    glides += s.used && s.kind == SegmentKind::kGlide;
+  }
   EXPECT_EQ(legs, 3);
+  EXPECT_LE(glides, 3);
   // The classic numbers travel along in the report.
   EXPECT_TRUE(r.details["classic"]["roll_error_deg"]["value"].is_null());
   EXPECT_GT(r.details["classic"]["depth_error_m"]["value"].get<double>(), 0.0);

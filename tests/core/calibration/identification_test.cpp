@@ -52,7 +52,8 @@ TEST(Identification, DrawnTruthsAreCoveredByThePosteriorSigma) {
 // speeds (pitch +-6 deg, period ~10 min), 1136 cannot hold depth at two of
 // its three (the elevator at its stop, sinking at -20 deg or climbing at
 // +15 deg). Before the averaged legs and the steady dives, the analysis
-// kept one speed of each and stated 2.9 and 7.6 kg of sigma.
+// kept one speed of each and stated 2.9 and 7.6 kg of sigma (now 0.4 and
+// 1.3 kg, with the segments weighted over the prior's spread).
 TEST(Identification, LimitCyclingAndSinkingVehiclesKeepTheirSpeeds) {
   const Harness h;
   for (std::uint64_t seed : {1109ULL, 1136ULL}) {
@@ -60,10 +61,31 @@ TEST(Identification, LimitCyclingAndSinkingVehiclesKeepTheirSpeeds) {
     SCOPED_TRACE(r.truth.describe());
     ASSERT_TRUE(r.known);
     EXPECT_EQ(r.log_rpms.size(), 3u);
-    EXPECT_LT(r.net_sigma_kg, 1.0);
+    EXPECT_LT(r.net_sigma_kg, 1.5);
     EXPECT_LE(std::abs(r.net_err_kg), 2.0 * r.net_sigma_kg);
     EXPECT_LE(std::abs(r.x_err_mm), 2.0 * r.x_sigma_mm);
   }
+}
+
+// Truth 2123 flies two speeds with the elevator at 6 and 11 deg and very
+// quiet means (pitch and elevator to 0.004 deg). At the prior mean the
+// covariance of a segment's heave and pitch residuals is nearly singular,
+// and the fit trusted that one combination: net buoyancy 4.9 kg off with a
+// stated sigma of 1.4 kg (3.6 sigma), CG x 10 mm off (4.3 sigma), and the
+// vehicle ended 2 kg heavy after one move. Weighted over the prior's spread:
+// net 2.7 +- 1.7 kg, CG x 6.3 +- 3.0 mm (2.1 sigma, the edge of what one
+// case in twenty may do), and the move leaves it positive.
+TEST(Identification, QuietTwoSpeedLogIsNotOverconfident) {
+  const Harness h;
+  const CaseResult r = h.run(2123, true);
+  SCOPED_TRACE(r.truth.describe());
+  ASSERT_TRUE(r.known);
+  std::printf("  2123: net err %+.2f kg (sigma %.2f), CG x err %+.2f mm (sigma %.2f), after one move %+.2f kg\n",
+              r.net_err_kg, r.net_sigma_kg, r.x_err_mm, r.x_sigma_mm, r.one.min_net_kg);
+  EXPECT_LE(std::abs(r.net_err_kg), 2.0 * r.net_sigma_kg);
+  EXPECT_LE(std::abs(r.x_err_mm), 2.5 * r.x_sigma_mm);
+  ASSERT_TRUE(r.looped);
+  EXPECT_GE(r.one.min_net_kg, 0.0);
 }
 
 }  // namespace

@@ -128,7 +128,9 @@ TEST(TransientFit, ReplayAtTheTruthMatchesTheLogAndTheJointFitIsNoWorseThanStead
     // The transients add information: never a wider sigma, half of one the
     // steady legs leave near its prior.
     EXPECT_LE(b.net_buoyancy_kg.sigma, a.net_buoyancy_kg.sigma * 1.001);
-    if (a.net_buoyancy_kg.sigma > 1.0) EXPECT_LT(b.net_buoyancy_kg.sigma, 0.5 * a.net_buoyancy_kg.sigma);
+    if (a.net_buoyancy_kg.sigma > 1.0) {
+      EXPECT_LT(b.net_buoyancy_kg.sigma, 0.5 * a.net_buoyancy_kg.sigma);
+    }
   }
 }
 

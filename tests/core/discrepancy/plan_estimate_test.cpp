@@ -68,5 +68,26 @@ TEST(PlanEstimate, ZeroSigmaIsNeverAdoptedAndGlidersKeepTheirFit) {
   EXPECT_EQ(planEstimate(g, &ok, {"quadratic_pitch_damping"}).source, EstimateSource::kAnalysis);
 }
 
+// Delphin2 with its tunnel thrusters running in every steady segment: the
+// analysis cannot tell the net buoyancy, the check's replay (thrusters
+// included) can. Its fit is the plan's, accepted terms or not, and said so.
+TEST(PlanEstimate, WhereTheAnalysisCannotTellTheChecksReplayFitIsUsed) {
+  analysis::AnalysisReport a = analysisReport();
+  a.net_buoyancy_kg = {false, NAN, NAN, "the tunnel thrusters ran in all 5 steady segment(s)"};
+  a.cg_x_mm = {false, NAN, NAN, "the tunnel thrusters ran in all 5 steady segment(s)"};
+  const ModelCheckResult c = check();
+  PlanEstimate e = planEstimate(a, &c, {});
+  EXPECT_EQ(e.source, EstimateSource::kModelCheckReplay);
+  EXPECT_DOUBLE_EQ(e.report.net_buoyancy_kg.value, 2.88);
+  EXPECT_DOUBLE_EQ(e.report.cg_x_mm.value, 0.07);
+  EXPECT_EQ(planEstimate(a, &c, {"quadratic_pitch_damping"}).source, EstimateSource::kModelCheck);
+  ModelCheckResult no_fit = check();
+  no_fit.net_buoyancy_sigma_kg = NAN;
+  e = planEstimate(a, &no_fit, {});
+  EXPECT_EQ(e.source, EstimateSource::kAnalysis);
+  EXPECT_FALSE(e.report.net_buoyancy_kg.known);
+  EXPECT_EQ(planEstimate(a, nullptr, {}).source, EstimateSource::kAnalysis);
+}
+
 }  // namespace
 }  // namespace auv::discrepancy
