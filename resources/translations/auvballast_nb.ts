@@ -1986,6 +1986,11 @@
         <translation>%1: %2 målepunkter i de tre diagrammene over %3 min.</translation>
     </message>
     <message>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="328"/>
+        <source>The next page&apos;s model check fits the whole log, which may tell the net buoyancy where the steady flight cannot.</source>
+        <translation>Modellsjekken på neste side tilpasser hele loggen, og kan kanskje gi netto oppdrift der den stødige flyvningen ikke kan.</translation>
+    </message>
+    <message>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="27"/>
         <source>n/a</source>
         <translation>i.t.</translation>
@@ -2009,6 +2014,16 @@
         <location filename="../../ui/widgets/segment_table.cpp" line="27"/>
         <source>min</source>
         <translation>min</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/segment_table.cpp" line="48"/>
+        <source>Each steady segment the analysis used (time in minutes): mean error ± its 95 % interval (depth: commanded − measured; pitch: measured − commanded; roll: as measured). A dive or climb (the steady middle of a depth change) shows its mean pitch instead. Click a row to zoom to it.</source>
+        <translation>Hvert stabile segment analysen brukte (tid i minutter): middelavvik ± 95 %-intervallet (dybde: ønsket − målt; stamp: målt − ønsket; rull: som målt). Et dykk eller en stigning (den stødige midten av en dybdeendring) viser i stedet sin middelstamp. Klikk på en rad for å zoome til den.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/segment_table.cpp" line="66"/>
+        <source>dive/climb</source>
+        <translation>dykk/stigning</translation>
     </message>
     <message>
         <location filename="../../ui/pages/deviation_plots_page.cpp" line="139"/>
@@ -2046,7 +2061,7 @@
         <translation>Netto oppdrift: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="331"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="334"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="102"/>
         <source> kg</source>
         <translation> kg</translation>
@@ -2092,14 +2107,14 @@
         <translation>Avvik (95 %): dybde %1 · stamp %2 · rull %3</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="357"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="360"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="118"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="121"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="357"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="360"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="118"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="119"/>
         <source>°</source>
@@ -2156,72 +2171,67 @@
         <translation>Hvert stabile glid analysen brukte (tid i minutter): middeldybde og -stamp, og rull ± 95 %-intervallet. Klikk på en rad for å zoome til den.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/segment_table.cpp" line="48"/>
-        <source>Each steady segment the analysis used (time in minutes): mean error ± its 95 % interval (depth: commanded − measured; pitch: measured − commanded; roll: as measured). Click a row to zoom to it.</source>
-        <translation>Hvert stabile segment analysen brukte (tid i minutter): middelavvik ± 95 %-intervallet (dybde: ønsket − målt; stamp: målt − ønsket; rull: som målt). Klikk på en rad for å zoome til den.</translation>
-    </message>
-    <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="347"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="350"/>
         <source>Point at a chart to read the time and the values there.</source>
         <translation>Pek på et diagram for å lese av tiden og verdiene der.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="356"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="359"/>
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="356"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="359"/>
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="356"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="359"/>
         <source>roll</source>
         <translation>rull</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="361"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="364"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="361"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="364"/>
         <source>%1 %2 (command %3)</source>
         <translation>%1 %2 (ønsket %3)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="363"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="366"/>
         <source>&lt;b&gt;%1 min&lt;/b&gt;: %2</source>
         <translation>&lt;b&gt;%1 min&lt;/b&gt;: %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="483"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="486"/>
         <source>Could not write %1: check the folder and its permissions.</source>
         <translation>Kunne ikke skrive %1: sjekk mappen og tilgangen til den.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="500"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="503"/>
         <source>Not exported: %1</source>
         <translation>Ikke eksportert: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="506"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="509"/>
         <source>Export the charts</source>
         <translation>Eksporter diagrammene</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="506"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="509"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="512"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="515"/>
         <source>Export the plotted data</source>
         <translation>Eksporter de viste dataene</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="512"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="515"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-filer (*.csv)</translation>
     </message>
@@ -2231,7 +2241,7 @@
         <translation>CG − CB: &lt;b&gt;%1&lt;/b&gt; (se merknadene)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="330"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="333"/>
         <source>This log&apos;s analysis alone: net buoyancy %1.</source>
         <translation>Analysen av denne loggen alene: netto oppdrift %1.</translation>
     </message>

@@ -123,6 +123,20 @@ TEST(Advice, NumbersFollowTheWizardLanguage) {
   EXPECT_EQ(fixed(-0.001, 2).toStdString(), fixed(0.0, 2).toStdString()) << "never -0.00";
 }
 
+// Masses of kit pieces and installed weights with the decimals they need:
+// Delphin2's 0.05 kg piece read "0.1 kg" and its optional 0.02 kg piece
+// "0.0 kg" (seen in the real program under Xvfb).
+TEST(Advice, MassesKeepTheDecimalsTheyNeed) {
+  EXPECT_EQ(massText(0.05, false), fixed(0.05, 2) + " kg");
+  EXPECT_EQ(massText(0.02, false), fixed(0.02, 2) + " kg");
+  EXPECT_EQ(massText(24.05, false, true), "+" + fixed(24.05, 2) + " kg");
+  EXPECT_EQ(massText(25.2, false), fixed(25.2, 1) + " kg");
+  EXPECT_EQ(massText(1.0, false), fixed(1.0, 1) + " kg");
+  EXPECT_EQ(massText(-1.2, false, true), fixed(-1.2, 1) + " kg");
+  EXPECT_EQ(massText(0.1234, false), fixed(0.123, 3) + " kg");  // at most grams
+  EXPECT_EQ(massText(0.0004, true), "0 g");
+}
+
 // The post-mission demo under Norwegian: the analysis notes and the
 // adjustment page's warnings and explanations are Norwegian; none of core's
 // English sentences and none of the wizard's English ones is left.

@@ -195,6 +195,12 @@ void AdjustmentPage::initializePage() {
   const bool g = state_.isGlider();
   const int decimals = massDecimals(plan.piece_sizes_kg);
   const double step = plan.piece_sizes_kg.empty() ? 0.1 : plan.piece_sizes_kg.front();
+  // Two points a row, or one where the labels are long (Delphin2's "Fore
+  // trim weight (assumed position)"): two long labels a row squeezed the
+  // quantity table beside them out of its band column.
+  qsizetype longest = 0;
+  for (const AdjustmentPoint& ap : v.points) longest = std::max(longest, q(ap.label).size());
+  const int per_row = longest > 24 ? 1 : 2;
   for (std::size_t i = 0; i < v.points.size(); ++i) {
     const AdjustmentPoint& ap = v.points[i];
     auto* spin = makeNumber(QString("actual_%1").arg(i), 0, ap.capacity_kg > 0 ? ap.capacity_kg : 1000.0, decimals, " kg",
@@ -206,7 +212,7 @@ void AdjustmentPage::initializePage() {
     spin->lineEdit()->installEventFilter(this);
     auto* label = new QLabel(q(ap.label) + ":");
     label->setBuddy(spin);
-    const int row = static_cast<int>(i / 2), col = static_cast<int>(i % 2) * 2;
+    const int row = static_cast<int>(i) / per_row, col = (static_cast<int>(i) % per_row) * 2;
     grid->addWidget(label, row, col);
     grid->addWidget(spin, row, col + 1);
     actual_.push_back(spin);

@@ -324,7 +324,10 @@ void DeviationPlotsPage::showAnalysis() {
   // from the model-check page) it is the check's ballast state.
   const auto e = sessionEstimate(state_);
   QString source;
-  if (e) {
+  if (e && !e->report.net_buoyancy_kg.known && !state_.isGlider()) {
+    source = tr("The next page's model check fits the whole log, which may tell the net buoyancy where the steady "
+                "flight cannot.");
+  } else if (e) {
     source = EstimateText::planUses(e->source);
     if (e->source != discrepancy::EstimateSource::kAnalysis)
       source += " " + tr("This log's analysis alone: net buoyancy %1.")

@@ -7,6 +7,7 @@
 #include <QLocale>
 #include <QScrollArea>
 #include <QString>
+#include <algorithm>
 #include <cmath>
 
 #include "widgets/number_input.h"
@@ -80,13 +81,22 @@ inline QString signedFixed(double v, int decimals) {
 
 // Glider ballast is set to the gram, AUV kit pieces are kilograms: show
 // each in the unit the technician works in.
+// Kilograms get the decimals the value needs, 1 to 3: Delphin2's 0.05 kg
+// piece must not read "0.1 kg", nor 24.05 kg typed by the operator "24.1".
 inline QString massText(double kg, bool grams, bool sign = false) {
   // Round first so that -0.4 g reads "0 g", not "-0 g".
-  const double shown = grams ? std::round(kg * 1000.0) : std::round(kg * 10.0) / 10.0;
+  int decimals = 1;
+  while (!grams && decimals < 3) {
+    const double scaled = kg * std::pow(10.0, decimals);
+    if (std::abs(scaled - std::round(scaled)) < 1e-6 * std::max(1.0, std::abs(scaled))) break;
+    ++decimals;
+  }
+  const double unit = std::pow(10.0, decimals);
+  const double shown = grams ? std::round(kg * 1000.0) : std::round(kg * unit) / unit;
   const double v = shown == 0.0 ? 0.0 : shown;
   const QString plus = sign && v > 0 ? QStringLiteral("+") : QString();
   if (grams) return QStringLiteral("%1%2 g").arg(plus, fixed(v, 0));
-  return QStringLiteral("%1%2 kg").arg(plus, fixed(v, 1));
+  return QStringLiteral("%1%2 kg").arg(plus, fixed(v, decimals));
 }
 
 }  // namespace auv::ui

@@ -131,11 +131,25 @@ void NumberInput::setRange(double lo, double hi) {
   min_ = lo;
   max_ = std::max(lo, hi);
   if (value_ < min_ || value_ > max_) setValue(value_);
+  updateMinimumWidth();
 }
 
 void NumberInput::setDecimals(int d) {
   decimals_ = std::max(0, d);
   edit_->setText(format(value_));
+  updateMinimumWidth();
+}
+
+// Wide enough for the longest value of the range with the field's decimals
+// (and a sign), so a long label beside it cannot squeeze the number out of
+// sight (Delphin2's installed masses read "l.00" on the adjustment page).
+void NumberInput::updateMinimumWidth() {
+  const double widest = std::min(std::max(std::abs(min_), std::abs(max_)), 99999.0);
+  const int digits = 1 + static_cast<int>(std::floor(std::log10(std::max(1.0, widest))));
+  const int chars = digits + (decimals_ > 0 ? decimals_ + 1 : 0) + (min_ < 0.0 ? 1 : 0);
+  const QMargins m = edit_->textMargins();
+  edit_->setMinimumWidth(edit_->fontMetrics().horizontalAdvance(QString(chars, QLatin1Char('0'))) + m.left() +
+                         m.right() + 18);
 }
 
 void NumberInput::checkLive() {

@@ -89,6 +89,7 @@ class NumberInput : public QWidget {
 
  private:
   void checkLive();
+  void updateMinimumWidth();
   void showProblem();
   void stepBy(int steps);
 

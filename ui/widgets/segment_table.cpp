@@ -46,7 +46,8 @@ void SegmentTable::show(const analysis::AnalysisReport* report, bool glider) {
       g ? tr("Each steady glide the analysis used (time in minutes): its mean depth and pitch, and the roll ± its "
              "95 % interval. Click a row to zoom to it.")
         : tr("Each steady segment the analysis used (time in minutes): mean error ± its 95 % interval (depth: "
-             "commanded − measured; pitch: measured − commanded; roll: as measured). Click a row to zoom to it."));
+             "commanded − measured; pitch: measured − commanded; roll: as measured). A dive or climb (the steady "
+             "middle of a depth change) shows its mean pitch instead. Click a row to zoom to it."));
   if (!report) return;
   // All rows at once: a row inserted at a time costs ~0.1 s per thousand
   // (an 1100 h log has thousands of segments).
@@ -57,11 +58,14 @@ void SegmentTable::show(const analysis::AnalysisReport* report, bool glider) {
     if (!s.used) continue;
     ++r;
     ranges_.push_back({s.start_s / 60.0, s.end_s / 60.0});
-    const QString cells[5] = {QString::number(r + 1),
-                              QStringLiteral("%1–%2").arg(fixed(s.start_s / 60.0, 1)).arg(fixed(s.end_s / 60.0, 1)),
-                              g ? cellText(s.depth_m, NAN, 1) : cellText(s.depth_error_m, s.depth_error_ci95_m, 2),
-                              g ? cellText(s.pitch_deg, NAN, 1) : cellText(s.pitch_error_deg, s.pitch_error_ci95_deg, 2),
-                              cellText(s.roll_deg, s.roll_ci95_deg, 2)};
+    // An AUV's steady dive or climb (the middle of a depth change) calibrates
+    // the lift but has no depth or pitch error: it says so, with its pitch.
+    const bool auv_glide = !g && s.kind == analysis::SegmentKind::kGlide;
+    const QString cells[5] = {
+        QString::number(r + 1), QStringLiteral("%1–%2").arg(fixed(s.start_s / 60.0, 1)).arg(fixed(s.end_s / 60.0, 1)),
+        g ? cellText(s.depth_m, NAN, 1) : auv_glide ? tr("dive/climb") : cellText(s.depth_error_m, s.depth_error_ci95_m, 2),
+        g || auv_glide ? cellText(s.pitch_deg, NAN, 1) : cellText(s.pitch_error_deg, s.pitch_error_ci95_deg, 2),
+        cellText(s.roll_deg, s.roll_ci95_deg, 2)};
     for (int c = 0; c < 5; ++c) {
       auto* item = new QTableWidgetItem(cells[c]);
       item->setTextAlignment(c == 0 ? Qt::AlignCenter : Qt::AlignRight | Qt::AlignVCenter);
