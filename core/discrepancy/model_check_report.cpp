@@ -168,6 +168,21 @@ void mergeIntoAnalysisJson(nlohmann::json& a, const ModelCheckResult& r) {
       a["cg_offset_mm"] = m["cg_offset_mm"];
       a["cg_offset_sigma_mm"] = m["cg_offset_sigma_mm"];
     }
+    // What the check's replay now tells is no longer "not identifiable"
+    // (e.g. Delphin2 with its thrusters running in every steady segment);
+    // why the steady flight could not stays under analysis_why.
+    if (a.contains("not_identifiable") && a["not_identifiable"].is_object()) {
+      nlohmann::json& ni = a["not_identifiable"];
+      nlohmann::json why = nlohmann::json::object();
+      auto adopt = [&](const char* key, bool told) {
+        if (!told || !ni.contains(key)) return;
+        why[key] = ni[key];
+        ni.erase(key);
+      };
+      adopt("net_buoyancy_kg", m["net_buoyancy_kg"].is_number());
+      adopt("cg_offset_mm.x", m.contains("cg_offset_mm") && m["cg_offset_mm"].value("x", nlohmann::json()).is_number());
+      if (!why.empty()) mc["analysis_why"] = why;
+    }
   }
   a["model_check"] = mc;
 }

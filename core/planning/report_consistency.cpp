@@ -60,7 +60,7 @@ void refuseUnknownReportKeys(const nlohmann::json& report, const std::string& re
        "cg_offset_sigma_mm", "cg_offset_y_basis", "cruise", "mass_to_add_g", "mass_to_add_sigma_g", "target_density_kgm3",
        "errors", "errors_ci95", "pitch_error_basis", "pitch_at_steady_depth_deg", "water", "water_ci95", "water_sources",
        "segments", "not_identifiable", "warnings", "notes", "details", "recommendation", "recommendation_unavailable",
-       "missing_physics", "model_check", "slope", "calibration"},
+       "missing_physics", "model_check", "slope", "calibration", "calibration_findings"},
       kReportDoc);
   refuseIfObject(root, "cg_offset_mm", {"x", "y"});
   refuseIfObject(root, "cg_offset_sigma_mm", {"x", "y"});

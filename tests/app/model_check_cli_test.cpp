@@ -169,4 +169,38 @@ TEST(ModelCheckCli, AcceptIntoAConfigurationThenPlanThenTheNextMissionCalibrates
             "history analysis #" + std::to_string(mc2["model_check"]["history_analysis_id"].get<long long>()));
 }
 
+// Delphin2's bundled model-check demo: its tunnel thrusters run in every
+// steady segment, and the steady balance has no thruster term, so analyze
+// says it cannot tell (it used to say -0.24 +- 0.01 kg against a truth of
+// +2.98). The model check replays the thrusters: its report carries its
+// fit (+3.02 kg, CG x +2.0 mm) with the analysis's reason beside it, and
+// plan accepts that report (it refused "calibration_findings" before).
+TEST(ModelCheckCli, ThrustersInEverySteadySegmentLeaveTheEstimateToTheCheck) {
+  const std::string log = std::string(AUV_RESOURCE_DIR) + "/examples/delphin2_model-check_propeller-torque.csv";
+  const auto a = runCli("analyze --vehicle delphin2 --log " + log + " --json -");
+  ASSERT_EQ(a.code, 0) << a.err;
+  const nlohmann::json aj = nlohmann::json::parse(a.out);
+  EXPECT_TRUE(aj["net_buoyancy_kg"].is_null());
+  EXPECT_NE(aj["not_identifiable"].value("net_buoyancy_kg", "").find("tunnel thrusters ran"), std::string::npos);
+
+  const auto r = runCli("model-check --vehicle delphin2 --log " + log + " --json " + tmp("d2.json"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json mc = readJson(tmp("d2.json"));
+  ASSERT_TRUE(mc["net_buoyancy_kg"].is_number());
+  EXPECT_NEAR(mc["net_buoyancy_kg"].get<double>(), 2.98, 0.1);  // # truth_net_buoyancy_kg in the file
+  EXPECT_NEAR(mc["cg_offset_mm"]["x"].get<double>(), 2.0, 0.2);  // # truth_cg_x_mm
+  EXPECT_FALSE(mc["not_identifiable"].contains("net_buoyancy_kg"));
+  EXPECT_TRUE(mc["model_check"]["analysis_why"].contains("net_buoyancy_kg"));
+
+  std::string plan = "plan --vehicle delphin2 --config 7-1-1 --report ";
+  plan += tmp("d2.json");
+  plan += " --installed 1,1 --temperature 11 --salinity 34.6 --depth 10 --history ";
+  plan += tmp("d2.sqlite");
+  plan += " --json -";
+  const auto p = runCli(plan);
+  ASSERT_EQ(p.code, 0) << p.err;
+  const nlohmann::json pj = nlohmann::json::parse(p.out);
+  EXPECT_NEAR(pj["estimate"]["net_buoyancy_kg"].get<double>(), mc["net_buoyancy_kg"].get<double>(), 1e-6) << p.out.substr(0, 600);
+}
+
 }  // namespace
