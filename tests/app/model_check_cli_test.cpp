@@ -182,6 +182,17 @@ TEST(ModelCheckCli, ThrustersInEverySteadySegmentLeaveTheEstimateToTheCheck) {
   const nlohmann::json aj = nlohmann::json::parse(a.out);
   EXPECT_TRUE(aj["net_buoyancy_kg"].is_null());
   EXPECT_NE(aj["not_identifiable"].value("net_buoyancy_kg", "").find("tunnel thrusters ran"), std::string::npos);
+  // Planning from that analysis is refused with its reason and the way out.
+  {
+    std::ofstream(tmp("d2-analysis.json")) << a.out;
+    std::string plan = "plan --vehicle delphin2 --config 7-1-1 --installed 1,1 --temperature 11 --salinity 34.6 --depth 10";
+    plan += " --history " + tmp("d2-refused.sqlite");
+    plan += " --report " + tmp("d2-analysis.json");
+    const auto refused = runCli(plan);
+    EXPECT_EQ(refused.code, 2) << refused.out;
+    EXPECT_NE(refused.err.find("tunnel thrusters ran"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("plan from the model check's estimate"), std::string::npos) << refused.err;
+  }
 
   const auto r = runCli("model-check --vehicle delphin2 --log " + log + " --json " + tmp("d2.json"));
   ASSERT_EQ(r.code, 0) << r.err;
