@@ -7,7 +7,9 @@
 // after one move, and the analysis time of a 3 h 1 Hz and a 24 h 10 Hz log.
 //   identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S]
 // (--log-interval: row interval of the flown logs, default 1 s; --transients:
-// the analysis also fits the transients, auv_transient_fit.h)
+// the analysis also fits the transients, auv_transient_fit.h; --fly-manoeuvre:
+// the second mission also flies the calibration manoeuvre the first plan
+// asked for, details.calibration_manoeuvre.flight)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -72,7 +74,7 @@ double timeAnalysis(const identification::Harness& h, double duration_s, double 
 int main(int argc, char** argv) {
   int truths = 50;
   std::uint64_t seed = 1100;
-  bool loop = true, timing = true, verbose = false;
+  bool loop = true, timing = true, verbose = false, fly_manoeuvre = false;
   double log_interval_s = 1.0;
   bool transients = false;
   for (int i = 1; i < argc; ++i) {
@@ -82,6 +84,7 @@ int main(int argc, char** argv) {
     else if (a == "--no-loop") loop = false;
     else if (a == "--no-timing") timing = false;
     else if (a == "--verbose") verbose = true;
+    else if (a == "--fly-manoeuvre") fly_manoeuvre = true;
     else if (a == "--log-interval" && i + 1 < argc) log_interval_s = std::atof(argv[++i]);
     else if (a == "--transients") transients = true;
     else if (a == "--truth-doc" && i + 2 < argc) {  // --truth-doc SEED FILE: the truth's hydrodynamics companion
@@ -96,17 +99,18 @@ int main(int argc, char** argv) {
       return 0;
     }
     else {
-      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients]\n");
+      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre]\n");
       return 2;
     }
   }
   identification::Harness h;
   h.log_interval_s = log_interval_s;
   h.use_transients = transients;
+  h.fly_manoeuvre = fly_manoeuvre;
   std::vector<double> en, ex, ey;
   int known = 0, cov_n = 0, cov_x = 0, cov_y = 0, y_known = 0;
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;
-  int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0, twice = 0;
+  int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0, twice = 0, asked = 0, flown = 0;
   std::map<std::string, int> identified;
   for (int i = 0; i < truths; ++i) {
     const identification::CaseResult r = h.run(seed + static_cast<std::uint64_t>(i), loop);
@@ -123,7 +127,11 @@ int main(int argc, char** argv) {
                               std::to_string(r.one.pitch_deg) + " roll " + std::to_string(r.one.roll_deg) +
                               (r.one.spec ? " SPEC" : " miss") + " | two: net " + std::to_string(r.two.net_op_kg) +
                               " pitch " + std::to_string(r.two.pitch_deg) + " roll " + std::to_string(r.two.roll_deg) +
-                              (r.two.spec ? " SPEC" : " miss"))
+                              (r.two.spec ? " SPEC" : " miss") + " | joint net err " + std::to_string(r.net2_err_kg) +
+                              " s " + std::to_string(r.net2_sigma_kg) +
+                              (r.manoeuvre_asked ? " manoeuvre expected s " + std::to_string(r.manoeuvre_expected_sigma_kg) +
+                                                       (r.manoeuvre_flown ? " flown" : " not flown")
+                                                 : std::string()))
                                  .c_str()
                            : "");
     for (const auto& q : r.calibration) identified[q.id] += q.identified ? 1 : 0;
@@ -146,6 +154,7 @@ int main(int argc, char** argv) {
       spec2 += r.two.spec, net2 += r.two.net_ok, pitch2 += r.two.pitch_ok, roll2 += r.two.roll_ok,
           safe2 += r.twice && r.two.safe && r.one.safe, twice += r.twice;
       if (r.log_rpms.size() >= 3) ++n3, spec3 += r.one.spec, spec23 += r.two.spec;
+      asked += r.manoeuvre_asked, flown += r.manoeuvre_flown;
     }
   }
   std::printf("identification bench: %d truths (seed %llu), estimates for %d\n", truths,
@@ -164,6 +173,9 @@ int main(int argc, char** argv) {
     std::printf("  two moves (second from the joint history calibration): spec %d of %d (>= 3 steady speeds: %d of %d); "
                 "net %d, pitch %d, roll %d; never negative in either %d of %d flown twice\n",
                 spec2, looped, spec23, n3, net2, pitch2, roll2, safe2, twice);
+  if (loop)
+    std::printf("  calibration manoeuvre: asked by %d first plans, flown in %d second missions%s\n", asked, flown,
+                fly_manoeuvre ? "" : " (not flown without --fly-manoeuvre)");
   if (timing) {
     std::printf("  analysis + calibration, 3 h at 1 Hz: %.3f s\n", timeAnalysis(h, 3 * 3600.0, 1.0));
     std::printf("  analysis + calibration, 24 h at 10 Hz: %.3f s\n", timeAnalysis(h, 24 * 3600.0, 0.1));

@@ -297,6 +297,7 @@ std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoeffic
     c.se = scaledTo(seconds);
     c.density_kgm3 = m.rho;
     planned.push_back(c);
+    man.flight.push_back({rpm, depth_rate_mps, seconds});
     return true;
   };
   if (rpms.size() < 3) {
@@ -306,10 +307,15 @@ std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoeffic
                            " m/s) at the operating depth");
   }
   constexpr double kRate = 0.25, kDepthChange = 30.0;
-  if (add(160.0, kRate, kDepthChange / kRate) && add(160.0, -kRate, kDepthChange / kRate))
+  const std::size_t before = planned.size();
+  if (!(add(160.0, kRate, kDepthChange / kRate) && add(160.0, -kRate, kDepthChange / kRate))) {
+    planned.resize(before);  // both or neither
+    man.flight.resize(before);
+  } else {
     man.legs.push_back("descend " + fmt("%.0f", kDepthChange) + " m at 160 rpm (about " + fmt("%.1f", per_rpm * 160.0) +
                        " m/s) at a steady " + fmt("%.2f", kRate) +
                        " m/s, then climb back the same way (2 min each; the steady middle of each counts)");
+  }
   if (planned.empty()) return std::nullopt;
   const Eigen::MatrixXd cov = covarianceAfter(nominal, m.W, m.rho, cal, planned);
   man.net_sigma_kg = std::sqrt(cov(kNet, kNet)) / units::g0;

@@ -109,7 +109,13 @@ struct AuvTrimEstimate {
   // (issue 11 item 5), with the sigmas predicted after it from the Fisher
   // information of the same model.
   struct Manoeuvre {
-    std::vector<std::string> legs;
+    // What to fly, for a mission planner: propeller speed, depth rate
+    // (positive down; 0 = level at the operating depth) and duration.
+    struct Leg {
+      double rpm = 0.0, depth_rate_mps = 0.0, duration_s = 0.0;
+    };
+    std::vector<std::string> legs;  // the same, in words for the technician
+    std::vector<Leg> flight;
     double net_sigma_kg = 0.0, x_sigma_m = 0.0;
   };
   std::optional<Manoeuvre> manoeuvre;

@@ -356,10 +356,15 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     if (e.history_segments_used > 0) d["history_segments_used"] = e.history_segments_used;
     d["chi2_per_dof"] = e.chi2_per_dof;
     if (e.buoyancy_identified) d["net_cg_x_correlation"] = e.net_x_correlation;
-    if (e.manoeuvre)
+    if (e.manoeuvre) {
+      nlohmann::json flight = nlohmann::json::array();
+      for (const auto& l : e.manoeuvre->flight)
+        flight.push_back({{"prop_rpm", l.rpm}, {"depth_rate_mps", l.depth_rate_mps}, {"duration_s", l.duration_s}});
       d["calibration_manoeuvre"] = {{"legs", e.manoeuvre->legs},
+                                    {"flight", flight},
                                     {"expected_sigma", {{"net_buoyancy_kg", e.manoeuvre->net_sigma_kg},
                                                         {"cg_x_mm", units::mToMm(e.manoeuvre->x_sigma_m)}}}};
+    }
     if (e.calibrated) {
       // The calibrated steady coefficients (Munk moment inside M_w), for
       // forward prediction by the planner.

@@ -78,10 +78,13 @@ analysis::AnalysisReport analyse(const Flown& f, const VehicleProfile& p, const 
 // Pitch at steady depth at the cruise propeller speed (the highest rpm of
 // the level segments used), duration-weighted: the speed the survey flies and
 // the planner predicts its flight pitch at. All level segments without rpm.
-double cruisePitchDeg(const analysis::AnalysisReport& rp) {
+// The pitch at cruise: the steady segments at the fastest survey speed
+// (not above survey_top_rpm, so a manoeuvre's faster leg does not count).
+double cruisePitchDeg(const analysis::AnalysisReport& rp, double survey_top_rpm) {
   double top = -1e30;
   for (const auto& s : rp.segments)
-    if (s.used && std::isfinite(s.pitch_deg) && std::isfinite(s.prop_rpm)) top = std::max(top, s.prop_rpm);
+    if (s.used && std::isfinite(s.pitch_deg) && std::isfinite(s.prop_rpm) && s.prop_rpm < survey_top_rpm + 5.0)
+      top = std::max(top, s.prop_rpm);
   double sw = 0.0, sp = 0.0;
   for (const auto& s : rp.segments) {
     if (!s.used || !std::isfinite(s.pitch_deg) || s.kind != analysis::SegmentKind::kSteady) continue;
@@ -91,6 +94,37 @@ double cruisePitchDeg(const analysis::AnalysisReport& rp) {
     sp += w * s.pitch_deg;
   }
   return sw > 0.0 ? sp / sw : rp.pitch_at_steady_depth_deg.mean;
+}
+
+// The calibration manoeuvre a plan asked for, appended to the mission as
+// the vehicle's own legs: level legs at the operating depth, and depth
+// changes as a depth command ramped every second at the asked rate.
+bool appendManoeuvre(const nlohmann::json& manoeuvre, double op_depth_m, sim::SurveyMission& m) {
+  if (!manoeuvre.contains("flight") || !manoeuvre["flight"].is_array()) return false;
+  double depth = op_depth_m;
+  bool any = false;
+  for (const auto& l : manoeuvre["flight"]) {
+    const double rpm = l.at("prop_rpm").get<double>(), rate = l.at("depth_rate_mps").get<double>();
+    const double seconds = l.at("duration_s").get<double>();
+    sim::DepthLeg leg;
+    leg.prop_demand = rpm;
+    if (rate == 0.0) {
+      leg.duration_s = seconds;
+      leg.depth_m = depth;
+      m.scenario.legs.push_back(leg);
+    } else {
+      for (double t = 1.0; t <= seconds + 1e-9; t += 1.0) {
+        leg.duration_s = 1.0;
+        leg.depth_m = depth + rate * t;
+        m.scenario.legs.push_back(leg);
+      }
+      depth += rate * seconds;
+    }
+    any = true;
+  }
+  // Settle back on the operating depth before the log ends.
+  if (any) m.scenario.legs.push_back({120.0, op_depth_m, m.rpms.back(), 0.0});
+  return any;
 }
 
 }  // namespace
@@ -207,7 +241,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   auto judge = [&](const Flown& fl, const analysis::AnalysisReport& rp, CaseResult::Outcome& o) {
     o.net_op_kg = resolvePoint(profile_.hull, next).displaced_kg - fl.mass_kg;
     o.min_net_kg = fl.min_net_kg;
-    o.pitch_deg = cruisePitchDeg(rp);
+    o.pitch_deg = cruisePitchDeg(rp, *std::max_element(m.rpms.begin(), m.rpms.end()));
     o.roll_deg = rp.cruise_roll_deg.known ? rp.cruise_roll_deg.value : rp.roll_deg.mean;
     o.roll_reach_deg = units::radToDeg(std::atan(0.5 * y_point / (fl.mass_kg * fl.bg_m)));
     o.net_ok = o.net_op_kg >= s.net_buoyancy_min_kg && o.net_op_kg <= s.net_buoyancy_max_kg;
@@ -227,7 +261,14 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   r.plan_net_kg = plan.predicted.net_buoyancy_kg;
   r.plan_pitch_deg = plan.flight_pitch_after_deg.value_or(plan.predicted.pitch_deg);
   r.plan_roll_deg = plan.predicted.roll_deg;
-  const Flown f2 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after), err, seed * 7 + 2, after);
+  r.manoeuvre_asked = plan.calibration_manoeuvre.has_value();
+  if (r.manoeuvre_asked)
+    r.manoeuvre_expected_sigma_kg = plan.calibration_manoeuvre->at("expected_sigma").at("net_buoyancy_kg").get<double>();
+  if (r.manoeuvre_asked && plan.calibration_manoeuvre->contains("flight"))
+    r.manoeuvre_flight = plan.calibration_manoeuvre->at("flight");
+  sim::SurveyMission m2m = m2;
+  if (fly_manoeuvre && plan.calibration_manoeuvre) r.manoeuvre_flown = appendManoeuvre(*plan.calibration_manoeuvre, op_depth, m2m);
+  const Flown f2 = fly(truth, nominal_.autopilot, m2m, sim::installedWeights(profile_, after), err, seed * 7 + 2, after);
   if (!dump_prefix.empty()) writeInterchangeCsv(f2.log, dump_prefix + "-2.csv");
   // Mission 2 analysed with mission 1 as history (the known move calibrates).
   analysis::AnalysisOptions a2;

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "analysis/calibration_parameter.h"
 #include "sim/mission_plan.h"
 #include "sim/truth_draw.h"
@@ -34,6 +36,9 @@ struct CaseResult {
     double net_op_kg = 0.0, min_net_kg = 0.0, pitch_deg = 0.0, roll_deg = 0.0, roll_reach_deg = 0.0;
   };
   bool looped = false, twice = false;  // twice: the second mission's joint estimate existed
+  bool manoeuvre_asked = false, manoeuvre_flown = false;  // by the first plan; in the second mission
+  double manoeuvre_expected_sigma_kg = 0.0;  // the net buoyancy sigma the first plan predicted after it
+  nlohmann::json manoeuvre_flight;  // the first plan's calibration_manoeuvre.flight
   double plan_band_lo_kg = 0.0, plan_band_hi_kg = 0.0, plan_net_kg = 0.0;
   double plan_pitch_deg = 0.0, plan_roll_deg = 0.0;  // predicted flight pitch (at rest if unknown), roll
   double kit_best_roll_deg = 0.0;  // the planner's roll when given the truth: what the kit's capacities allow
@@ -52,6 +57,13 @@ class Harness {
   double log_interval_s = 1.0;
   // Fit the transients jointly with the steady legs (AnalysisOptions::use_transients).
   bool use_transients = false;
+  // The second mission also flies the calibration manoeuvre the first plan
+  // asked for (details.calibration_manoeuvre.flight), as an operator told
+  // to would; false: the survey lines only. Off by default: with the history
+  // calibration the second estimate is already sharp, and the flown
+  // manoeuvre (1 Hz) biased it by about 0.1 kg on some truths
+  // (docs/decisions/analysis-calibration.md).
+  bool fly_manoeuvre = false;
 
  private:
   VehicleProfile profile_;      // nominal profile with its companion hydrodynamics: all the analysis gets
