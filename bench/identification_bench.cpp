@@ -128,7 +128,9 @@ int main(int argc, char** argv) {
                               (r.one.spec ? " SPEC" : " miss") + " | two: net " + std::to_string(r.two.net_op_kg) +
                               " pitch " + std::to_string(r.two.pitch_deg) + " roll " + std::to_string(r.two.roll_deg) +
                               (r.two.spec ? " SPEC" : " miss") + " | joint net err " + std::to_string(r.net2_err_kg) +
-                              " s " + std::to_string(r.net2_sigma_kg) +
+                              " s " + std::to_string(r.net2_sigma_kg) + " (predicted " +
+                              std::to_string(r.after_move_expected_sigma_kg) + ") x err " + std::to_string(r.x2_err_mm) + " s " + std::to_string(r.x2_sigma_mm) +
+                              " (predicted " + std::to_string(r.after_move_expected_x_sigma_mm) + ")" +
                               (r.manoeuvre_asked ? " manoeuvre expected s " + std::to_string(r.manoeuvre_expected_sigma_kg) +
                                                        (r.manoeuvre_flown ? " flown" : " not flown")
                                                  : std::string()))

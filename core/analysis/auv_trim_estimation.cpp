@@ -323,6 +323,70 @@ std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoeffic
   return man;
 }
 
+// The next mission after the move: this log's level segments flown again
+// (same speeds, durations and noise) at the state a plan aims for, net
+// buoyancy mid-band (0.6 kg) or the safety margin, and the CG x that flies
+// level at the log's mean speed. Analysed with this log as history, the known change of mass
+// and moment between them separates what this log alone cannot: on the
+// identification truths a second mission so analysed reached 0.03-0.07 kg
+// where the manoeuvre predicted 0.6-0.9 (docs/decisions/analysis-calibration.md).
+// Only the regressors enter the covariance, so the known offsets are not needed.
+std::optional<AuvTrimEstimate::AfterMove> predictAfterMove(const SteadyHydroCoefficients& nominal, const Model& m,
+                                                           const SteadyCalibration& cal, const std::vector<Meas>& meas,
+                                                           const AuvTrimEstimate& est) {
+  if (!est.calibrated || meas.empty()) return std::nullopt;
+  // Where a plan with this sigma lands: mid-band, or at the safety margin
+  // (1.645 sigma) when that is higher. Assumed at mid-band alone, the
+  // prediction was up to 14 times too sharp for vehicles the margin sent
+  // 5-7 kg light (seed 3122), at the margin at most 2.9.
+  const double kNetAfter_kg = std::max(0.6, 1.645 * std::sqrt(cal.cov(kNet, kNet)) / units::g0);
+  double su = 0.0;
+  int level = 0;
+  for (const Meas& q : meas)
+    if (q.v[kRate] == 0.0 || std::abs(q.v[kRate]) < 0.02) su += q.v[kSpeed], ++level;
+  if (level == 0 || !(su > 0.0)) return std::nullopt;
+  auto flight = [&](double x_g, double u) {
+    LevelFlightInput in;
+    in.weight_n = m.W;
+    in.buoyancy_n = m.W + kNetAfter_kg * units::g0;
+    in.x_g_m = x_g;
+    in.bg_m = cal.p(kBg);
+    in.speed_mps = u;
+    in.density_kgm3 = m.rho;
+    return solveLevelFlight(*est.calibrated, in);
+  };
+  // CG x for level flight: secant steps on the pitch at the mean speed.
+  const double u_mean = su / level;
+  double x0 = cal.p(kXg), x1 = x0 - 0.005;
+  LevelFlight f0 = flight(x0, u_mean), f1 = flight(x1, u_mean);
+  for (int it = 0; it < 8 && f0.ok && f1.ok && std::abs(f1.pitch_rad) > 1e-6; ++it) {
+    const double d = f1.pitch_rad - f0.pitch_rad;
+    if (!(std::abs(d) > 1e-12)) break;
+    const double x2 = x1 - f1.pitch_rad * (x1 - x0) / d;
+    x0 = x1, f0 = f1, x1 = x2, f1 = flight(x1, u_mean);
+  }
+  if (!f1.ok) return std::nullopt;
+  std::vector<CalibrationSegment> planned;
+  for (const Meas& q : meas) {
+    if (!(std::abs(q.v[kRate]) < 0.02)) continue;
+    const LevelFlight f = flight(x1, q.v[kSpeed]);
+    if (!f.ok) continue;
+    CalibrationSegment c;
+    c.v = {q.v[kSpeed], f.pitch_rad, 0.0, f.elevator_deg + est.elevator_bias_deg, 0.0};
+    c.se = q.se;
+    c.density_kgm3 = m.rho;
+    planned.push_back(c);
+  }
+  if (planned.empty()) return std::nullopt;
+  const Eigen::MatrixXd cov = covarianceAfter(nominal, m.W, m.rho, cal, planned);
+  AuvTrimEstimate::AfterMove out;
+  out.net_sigma_kg = std::sqrt(cov(kNet, kNet)) / units::g0;
+  out.x_sigma_m = std::sqrt(cov(kXg, kXg));
+  out.net_kg = kNetAfter_kg;
+  out.x_g_m = x1;
+  return out;
+}
+
 }  // namespace
 
 AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, const SteadyHydroCoefficients* coeffs,
@@ -500,6 +564,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     out.segment_x_m[seg_index[j]] = b(1) / A(1, 1);
   }
   out.manoeuvre = planManoeuvre(*coeffs, m, cal, meas, segments, seg_index, out);
+  out.after_move = predictAfterMove(*coeffs, m, cal, meas, out);
   if (!m.c.note.empty()) out.notes.push_back(m.c.note);
   std::string ident, prior;
   for (const auto& q : cal.parameters) (q.identified ? ident : prior) += (q.identified ? ident : prior).empty() ? q.id : ", " + q.id;

@@ -356,6 +356,11 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     if (e.history_segments_used > 0) d["history_segments_used"] = e.history_segments_used;
     d["chi2_per_dof"] = e.chi2_per_dof;
     if (e.buoyancy_identified) d["net_cg_x_correlation"] = e.net_x_correlation;
+    if (e.after_move)
+      d["after_move_expected_sigma"] = {{"net_buoyancy_kg", e.after_move->net_sigma_kg},
+                                        {"cg_x_mm", units::mToMm(e.after_move->x_sigma_m)},
+                                        {"assumed_net_buoyancy_kg", e.after_move->net_kg},
+                                        {"assumed_cg_x_mm", units::mToMm(e.after_move->x_g_m)}};
     if (e.manoeuvre) {
       nlohmann::json flight = nlohmann::json::array();
       for (const auto& l : e.manoeuvre->flight)

@@ -82,6 +82,10 @@ nlohmann::json toJson(const PreMissionPlan& p) {
       {"mass_sigma_kg", r6(p.vehicle.mass_sigma_kg)}};
   j["water"] = waterJson(p.at_points.front().water, p.at_points.front().state);
   if (p.calibration_manoeuvre) j["calibration_manoeuvre"] = *p.calibration_manoeuvre;
+  if (p.after_move_net_sigma_kg)
+    j["after_move_expected_sigma"] = {{"net_buoyancy_kg", r6(*p.after_move_net_sigma_kg)},
+                                      {"cg_x_mm", p.after_move_x_sigma_m ? nlohmann::json(r6(*p.after_move_x_sigma_m * 1e3))
+                                                                         : nlohmann::json(nullptr)}};
   j["warnings"] = p.warnings;
   j["notes"] = p.notes;
   if (!p.details.empty()) j["details"] = p.details;

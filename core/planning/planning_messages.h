@@ -66,7 +66,17 @@ inline constexpr MessageFormat kClassicStandardKit{"plan.classic_standard_kit",
 inline constexpr MessageFormat kManoeuvre{
     "plan.manoeuvre",
     "the net-buoyancy sigma (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next "
-    "mission (%3 short legs at different speeds); it would bring the sigma to about %4 kg"};
+    "mission (%3 short leg(s)); with this log alone it would bring the sigma to about %4 kg"};
+inline constexpr MessageFormat kAfterMove{
+    "plan.after_move",
+    "this move is also a calibration: flown after it and analysed with the last log as history (the known change of "
+    "mass and moment between them), the next mission's survey should tell the net buoyancy to about +-%1 kg and CG x "
+    "to about +-%2 mm, enough for a second move into the band"};
+inline constexpr MessageFormat kAfterMoveStillWide{
+    "plan.after_move_still_wide",
+    "this move is also a calibration, but flown after it and analysed with the last log as history the next "
+    "mission's survey would still leave the net buoyancy at about +-%1 kg (CG x about +-%2 mm), too wide for the band: "
+    "fly the calibration manoeuvre as well"};
 inline constexpr MessageFormat kRollAtCruise{
     "plan.roll_at_cruise",
     "roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the "
@@ -76,6 +86,6 @@ inline constexpr MessageFormat kRollAtCruise{
 inline constexpr const MessageFormat* kAll[] = {
     &kNoChange, &kNextMission, &kMassFromLastMission, &kSafetyMargin, &kCgXAssumed, &kCgYAssumed, &kUnsafe,
     &kUnsafeSinks, &kAboveBandForMargin, &kBandNotReachable, &kOptionalPieces, &kWideSigma, &kClassicTable,
-    &kClassicBlocked, &kClassicStandardKit, &kManoeuvre, &kRollAtCruise};
+    &kClassicBlocked, &kClassicStandardKit, &kManoeuvre, &kAfterMove, &kAfterMoveStillWide, &kRollAtCruise};
 
 }  // namespace auv::planning::msg

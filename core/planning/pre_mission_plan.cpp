@@ -352,19 +352,32 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
   predictFlightPitch(v, in.estimate, out.vehicle, sol, out);
   // Too wide for the band: the margin alone takes half of it, or the
   // answer ends outside it. Then ask for the manoeuvre.
-  if (in.estimate.calibration_manoeuvre && in.policy != PlanPolicy::Classic &&
-      (!out.buoyancy_in_band || 2.0 * out.margin_kg > spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg)) {
+  const double band_kg = spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg;
+  const bool too_wide = in.policy != PlanPolicy::Classic && (!out.buoyancy_in_band || 2.0 * out.margin_kg > band_kg);
+  auto num = [](const char* f, double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, f, x);
+    return std::string(b);
+  };
+  if (too_wide && in.estimate.calibration_manoeuvre) {
     out.calibration_manoeuvre = in.estimate.calibration_manoeuvre;
     const nlohmann::json& m = *out.calibration_manoeuvre;
-    auto num = [](const char* f, double x) {
-      char b[32];
-      std::snprintf(b, sizeof b, f, x);
-      return std::string(b);
-    };
-    out.notes.push_back(Message(planning::msg::kManoeuvre, {num("%.2f", out.net_sigma_kg),
-                                                  num("%.1f", spec.net_buoyancy_max_kg - spec.net_buoyancy_min_kg),
+    out.notes.push_back(Message(planning::msg::kManoeuvre, {num("%.2f", out.net_sigma_kg), num("%.1f", band_kg),
                                                   std::to_string(m["legs"].size()),
                                                   num("%.2f", m["expected_sigma"]["net_buoyancy_kg"].get<double>())}));
+  }
+  // The move itself calibrates the next mission's analysis (with this log
+  // as history); say how far, and whether that alone will do.
+  if (too_wide && in.estimate.after_move_net_sigma_kg) {
+    out.after_move_net_sigma_kg = in.estimate.after_move_net_sigma_kg;
+    out.after_move_x_sigma_m = in.estimate.after_move_x_sigma_m;
+    const double s_after = *out.after_move_net_sigma_kg;
+    const bool enough = 2.0 * in.sigma_factor * s_after <= band_kg;  // the same test as too_wide
+    out.notes.push_back(Message(enough ? planning::msg::kAfterMove : planning::msg::kAfterMoveStillWide,
+                                {num("%.2f", s_after),
+                                 out.after_move_x_sigma_m
+                                     ? num(*out.after_move_x_sigma_m < 1e-4 ? "%.2f" : "%.1f", *out.after_move_x_sigma_m * 1e3)
+                                     : "?"}));
   }
   explainPlan(v, pr, out);
   if (in.estimate.cg_y_basis == "cruise" && in.estimate.cg_y_m) {

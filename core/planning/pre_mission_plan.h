@@ -84,6 +84,10 @@ struct PreMissionPlan {
   // pushes the vehicle out of it): the short addition to the next mission
   // that would identify the rest {legs, expected_sigma} (issue 11 item 5).
   std::optional<nlohmann::json> calibration_manoeuvre;
+  // With the same condition: this move is itself a calibration; the sigmas
+  // the next mission's survey, analysed with the last log as history, should
+  // reach (the analysis's prediction).
+  std::optional<double> after_move_net_sigma_kg, after_move_x_sigma_m;
   std::vector<Message> notes, warnings;
   nlohmann::json details = nlohmann::json::object();
 };

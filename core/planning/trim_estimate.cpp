@@ -81,6 +81,12 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
       e.calibrated_hydrodynamics = d["calibrated_hydrodynamics"];
     if (d.is_object() && d.contains("calibration_manoeuvre") && d["calibration_manoeuvre"].is_object())
       e.calibration_manoeuvre = d["calibration_manoeuvre"];
+    if (d.is_object() && d.contains("after_move_expected_sigma") && d["after_move_expected_sigma"].is_object()) {
+      const nlohmann::json& a = d["after_move_expected_sigma"];
+      if (a.contains("net_buoyancy_kg") && a["net_buoyancy_kg"].is_number())
+        e.after_move_net_sigma_kg = a["net_buoyancy_kg"].get<double>();
+      if (a.contains("cg_x_mm") && a["cg_x_mm"].is_number()) e.after_move_x_sigma_m = a["cg_x_mm"].get<double>() * 1e-3;
+    }
   }
   return e;
 }

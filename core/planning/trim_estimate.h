@@ -36,6 +36,9 @@ struct TrimEstimate {
   std::optional<nlohmann::json> calibrated_hydrodynamics;
   // The analysis's proposed calibration manoeuvre {legs, expected_sigma}.
   std::optional<nlohmann::json> calibration_manoeuvre;
+  // The analysis's prediction for the next mission flown after a move and
+  // analysed with this log as history (details.auv_estimate.after_move_expected_sigma).
+  std::optional<double> after_move_net_sigma_kg, after_move_x_sigma_m;
 };
 
 // Reads the analysis report JSON (issue #3 contract: net_buoyancy_kg,

@@ -459,151 +459,146 @@
         <translation>Den klassiske tabellen bruker bare standard vektsett.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="123"/>
-        <source>The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short legs at different speeds); it would bring the uncertainty to about %4 kg.</source>
-        <translation>Usikkerheten i netto oppdrift (%1 kg) er for stor for båndet på %2 kg: legg kalibreringsmanøveren til neste oppdrag (%3 korte etapper i ulike hastigheter); den ville bringe usikkerheten ned til omtrent %4 kg.</translation>
-    </message>
-    <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="124"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="126"/>
         <source>Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).</source>
         <translation>Rull er planlagt og forutsagt i marsjfart (%1 o/min, propellmoment inkludert): sidebalansen som holder fartøyet på rett kjøl der, slik oppgaven bedømmer rull (§5.3.3).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="126"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="128"/>
         <source>%1 is a constant %2 %3 everywhere (all phases, depths and speeds)</source>
         <translation>%1 er konstant %2 %3 overalt (alle faser, dybder og hastigheter)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="127"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="129"/>
         <source>%1 grows %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="128"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="130"/>
         <source>%1 shrinks %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="129"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="131"/>
         <source>%1 grows %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="130"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="132"/>
         <source>%1 shrinks %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="131"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="133"/>
         <source>%1 concentrates at %2 %3 (mean %4 %5 against %6 overall)</source>
         <translation>%1 samler seg ved %2 %3 (middel %4 %5 mot %6 totalt)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="132"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="134"/>
         <source>%1: no factor of the log explains it</source>
         <translation>%1: ingen faktor i loggen forklarer det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="133"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="135"/>
         <source>AUV rigid-body model of the simulator (Fossen form) on smoothed logged states; simulation: replay of the logged commands through the model&apos;s autopilot; ballast state: net buoyancy and CG x/y</source>
         <translation>AUV-stivlegememodellen fra simulatoren (Fossen-form) på glattede loggede tilstander; simulering: de loggede kommandoene spilt av gjennom modellens autopilot; ballasttilstand: netto oppdrift og CG x/y</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="134"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="136"/>
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state and Cd0</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand og Cd0</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="135"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="137"/>
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state, Cd0 and the lift slope</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand, Cd0 og løftestigningstallet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="239"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="241"/>
         <source>bringing the CG back towards the CB fore-aft</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="240"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="242"/>
         <source>balanced by the other points&apos; fore-aft shares</source>
         <translation>balansert av de andre punktenes andeler forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="241"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="243"/>
         <source>bringing the CG back towards the CB sideways</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="242"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="244"/>
         <source>balanced by the other points&apos; sideways shares</source>
         <translation>balansert av de andre punktenes andeler sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="303"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="305"/>
         <source>%1: %2 (%3; %4 → %5 of %6).</source>
         <translation>%1: %2 (%3; %4 → %5 av %6).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="312"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="314"/>
         <source>%1 is largest during %2: mean %3 %4</source>
         <translation>%1 er størst under %2: middel %3 %4</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="327"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="329"/>
         <source>; independent of %1</source>
         <translation>; uavhengig av %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="222"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="290"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="224"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="292"/>
         <source> and </source>
         <translation> og </translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="226"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="298"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="228"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="300"/>
         <source>remove %1, then add %2</source>
         <translation>fjern %1, legg så til %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="228"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="300"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="230"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="302"/>
         <source>remove %1</source>
         <translation>fjern %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="230"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="302"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="232"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="304"/>
         <source>add %1</source>
         <translation>legg til %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="232"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="234"/>
         <source>%1 mm forward</source>
         <translation>%1 mm forover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="233"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="235"/>
         <source>%1 mm aft</source>
         <translation>%1 mm akterover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="235"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="237"/>
         <source>%1 mm to starboard</source>
         <translation>%1 mm mot styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="236"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="238"/>
         <source>%1 mm to port</source>
         <translation>%1 mm mot babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="245"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="247"/>
         <source>%1: %2 (%3), which lowers the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som senker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="246"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="248"/>
         <source>%1: %2 (%3), which raises the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som øker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
@@ -628,52 +623,67 @@
         <translation>Oppgavens fordeling gjør fartøyet %1 for tungt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="258"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="123"/>
+        <source>The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short leg(s)); with this log alone it would bring the uncertainty to about %4 kg.</source>
+        <translation>Usikkerheten i netto oppdrift (%1 kg) er for stor for båndet på %2 kg: legg kalibreringsmanøveren til neste oppdrag (%3 korte etapper); med denne loggen alene ville den bringe usikkerheten ned til omtrent %4 kg.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="124"/>
+        <source>This move is also a calibration: flown after it and analysed with the last log as history (the known change of mass and moment between them), the next mission&apos;s survey should tell the net buoyancy to about ±%1 kg and CG x to about ±%2 mm, enough for a second move into the band.</source>
+        <translation>Denne flyttingen er også en kalibrering: fløyet etter den og analysert med siste logg som historikk (den kjente endringen i masse og moment mellom dem), bør neste oppdrags kartlegging gi netto oppdrift til omtrent ±%1 kg og CG x til omtrent ±%2 mm, nok til at en ny flytting lander i båndet.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="125"/>
+        <source>This move is also a calibration, but flown after it and analysed with the last log as history the next mission&apos;s survey would still leave the net buoyancy at about ±%1 kg (CG x about ±%2 mm), too wide for the band: fly the calibration manoeuvre as well.</source>
+        <translation>Denne flyttingen er også en kalibrering, men fløyet etter den og analysert med siste logg som historikk ville neste oppdrags kartlegging fortsatt gi netto oppdrift til omtrent ±%1 kg (CG x omtrent ±%2 mm), for usikkert for båndet: fly kalibreringsmanøveren også.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="260"/>
         <source>The net buoyancy band %1 to %2 cannot be reached with this kit; best %3</source>
         <translation>Båndet for netto oppdrift %1 til %2 kan ikke nås med dette vektsettet; beste er %3</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="260"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="262"/>
         <source>The pitch band ±%1 cannot be reached with this kit (at rest); best %2</source>
         <translation>Stampbåndet ±%1 kan ikke nås med dette vektsettet (i ro); beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="262"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="264"/>
         <source>The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet mens stampen holdes i båndet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="264"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="266"/>
         <source>The roll band ±%1 cannot be reached with this kit; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="266"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="268"/>
         <source>; flying level at %1 m/s it pitches %2°, inside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, innenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="267"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="269"/>
         <source>; flying level at %1 m/s it pitches %2°, outside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, utenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="270"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="272"/>
         <source>; out of reach whatever the piece sizes: the points&apos; capacities, the installed pieces and the higher priorities limit it</source>
         <translation>; utenfor rekkevidde uansett loddstørrelser: punktenes kapasitet, loddene som er montert og de høyere prioritetene begrenser det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="273"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="275"/>
         <source>; a %1 piece would reach it</source>
         <translation>; et lodd på %1 ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="275"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="277"/>
         <source>; no single extra piece size tried (%1) would reach it</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="277"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="279"/>
         <source>; no single extra piece size tried (%1) would reach it (some were not searched to the end)</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det (noen ble ikke søkt helt ut)</translation>
     </message>
@@ -681,262 +691,262 @@
 <context>
     <name>AdviceWord</name>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="140"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
         <source>operating</source>
         <translation>operasjonsdybden</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="140"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
         <source>deepest</source>
         <translation>største dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="141"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="143"/>
         <source>surface</source>
         <translation>overflaten</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="141"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="143"/>
         <source>transit</source>
         <translation>transitt</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="144"/>
         <source>none</source>
         <translation>ingen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="144"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
         <source>depth command steps</source>
         <translation>trinn i dybdekommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="144"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
         <source>pitch command steps</source>
         <translation>trinn i stampkommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="145"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
         <source>speed changes</source>
         <translation>fartsendringer</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="145"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
         <source>propeller speed changes</source>
         <translation>endringer i propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="148"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
         <source>vertical-velocity error</source>
         <translation>avvik i vertikal hastighet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="148"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
         <source>vertical-force error</source>
         <translation>avvik i vertikal kraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="149"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
         <source>pitch-moment error</source>
         <translation>avvik i stampmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="149"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
         <source>roll-moment error</source>
         <translation>avvik i rullmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
         <source>depth error</source>
         <translation>dybdeavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
         <source>pitch error</source>
         <translation>stampavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
         <source>roll error</source>
         <translation>rullavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
         <source>speed error</source>
         <translation>fartsavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
         <source>surge-force error</source>
         <translation>avvik i langskipskraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
         <source>error</source>
         <translation>avvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
         <source>pressure</source>
         <translation>trykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
         <source>temperature</source>
         <translation>temperatur</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
         <source>time</source>
         <translation>tid</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
         <source>speed</source>
         <translation>fart</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
         <source>propeller speed</source>
         <translation>propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
         <source>time since an actuator change</source>
         <translation>tid siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
         <source>100 dbar</source>
         <translation>100 dbar</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
         <source>degC</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="160"/>
         <source>hour</source>
         <translation>time</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="160"/>
         <source>0.1 m/s</source>
         <translation>0,1 m/s</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
         <source>100 rpm</source>
         <translation>100 o/min</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
         <source>10 deg of pitch</source>
         <translation>10° stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="160"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
         <source>10 s since an actuator change</source>
         <translation>10 s siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
         <source>below</source>
         <translation>under</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
         <source>above</source>
         <translation>over</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
         <source>after</source>
         <translation>etter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
         <source>before</source>
         <translation>før</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
         <source>within</source>
         <translation>innenfor</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
         <source>surfaces</source>
         <translation>overflateopphold</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
         <source>dives</source>
         <translation>dykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
         <source>climbs</source>
         <translation>stigninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
         <source>levels</source>
         <translation>planflyvninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
         <source>turns</source>
         <translation>svinger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
         <source>starboard</source>
         <translation>styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
         <source>port</source>
         <translation>babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="169"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
         <source>port to the starboard</source>
         <translation>babord til styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="169"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
         <source>starboard to the port</source>
         <translation>styrbord til babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="172"/>
         <source>lower to the upper</source>
         <translation>nedre til øvre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="172"/>
         <source>upper to the lower</source>
         <translation>øvre til nedre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="173"/>
         <source>lowers</source>
         <translation>senker</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="173"/>
         <source>raises</source>
         <translation>hever</translation>
     </message>
@@ -1150,145 +1160,145 @@
         <translation>Gjør om endringen som sist ble angret (Ctrl+Shift+Z).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="201"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="207"/>
         <source>Kit pieces now in &apos;%1&apos; after the work, in kg. Planned: %2. Arrows step by one %3 piece; Ctrl+Z undoes.</source>
         <translation>Vektbiter i «%1» etter arbeidet, i kg. Planlagt: %2. Piltastene endrer med én %3-bit; Ctrl+Z angrer.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="234"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="240"/>
         <source>Add %1 × %2 at %3</source>
         <translation>Legg til %1 × %2 i %3</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="234"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="240"/>
         <source>Remove %1 × %2 at %3</source>
         <translation>Fjern %1 × %2 fra %3</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="247"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="253"/>
         <source>Nothing to change: the vehicle stays as it is.</source>
         <translation>Ingenting å endre: fartøyet blir som det er.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="279"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="288"/>
         <source>%1 of %2 done</source>
         <translation>%1 av %2 gjort</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="297"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="306"/>
         <source>Net buoyancy</source>
         <translation>Netto oppdrift</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="297"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="306"/>
         <source>%1 kg</source>
         <translation>%1 kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="298"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="307"/>
         <source>%1 ± %2 kg</source>
         <translation>%1 ± %2 kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="299"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="308"/>
         <source>%1 .. %2 kg</source>
         <translation>%1 .. %2 kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="301"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="310"/>
         <source>Pitch at rest</source>
         <translation>Stamp i ro</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="311"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="320"/>
         <source>Pitch in flight (%1 m/s)</source>
         <translation>Stamp under fart (%1 m/s)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="374"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="383"/>
         <source> Pitch in flight %1° %2.</source>
         <translation> Stamp under fart %1° %2.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="301"/>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="304"/>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="312"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="310"/>
         <location filename="../../ui/pages/adjustment_page.cpp" line="313"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="321"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="322"/>
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="303"/>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="306"/>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="314"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="312"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="315"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="323"/>
         <source>±%1°</source>
         <translation>±%1°</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="304"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="313"/>
         <source>Roll</source>
         <translation>Rull</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="334"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="343"/>
         <source>%1 m %2 kg</source>
         <translation>%1 m %2 kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="336"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="345"/>
         <source>Safety: net buoyancy stays above the margin %1 kg (%2) at every planned depth: %3.</source>
         <translation>Sikkerhet: netto oppdrift holder seg over marginen %1 kg (%2) på hver planlagte dybde: %3.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="337"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="346"/>
         <source>&lt;span style=&apos;color:#b00020&apos;&gt;Not safe: net buoyancy falls below the margin %1 kg (%2) at a planned depth: %3.&lt;/span&gt;</source>
         <translation>&lt;span style=&apos;color:#b00020&apos;&gt;Ikke sikkert: netto oppdrift faller under marginen %1 kg (%2) på en planlagt dybde: %3.&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="339"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="348"/>
         <source>1.645 σ</source>
         <translation>1,645 σ</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="355"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="364"/>
         <source>As planned: the prediction above holds.</source>
         <translation>Som planlagt: prediksjonen over gjelder.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="373"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="382"/>
         <source>.</source>
         <translation>.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="373"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="382"/>
         <source>; NOT safe at every planned depth.</source>
         <translation>; IKKE sikkert på hver planlagte dybde.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="425"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="434"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="271"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="279"/>
         <source>&lt;b&gt;Calibration manoeuvre&lt;/b&gt; to add to the next mission: %1</source>
         <translation>&lt;b&gt;Kalibreringsmanøver&lt;/b&gt; å legge til neste oppdrag: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="366"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="375"/>
         <source>Differs from the plan at %1. As installed: net buoyancy %2 %3, pitch %4 %5, roll %6 %7%8</source>
         <translation>Avviker fra planen i %1. Slik det er montert: netto oppdrift %2 %3, stamp %4 %5, rull %6 %7%8</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="368"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="377"/>
         <source> kg</source>
         <translation> kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="302"/>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="305"/>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="369"/>
-        <location filename="../../ui/pages/adjustment_page.cpp" line="371"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="311"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="314"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="378"/>
+        <location filename="../../ui/pages/adjustment_page.cpp" line="380"/>
         <source>°</source>
         <translation>°</translation>
     </message>
@@ -1433,11 +1443,13 @@
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" line="170"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="179"/>
         <source>net buoyancy ± %1 kg</source>
         <translation>netto oppdrift ± %1 kg</translation>
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" line="171"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="180"/>
         <source>CG x ± %1 mm</source>
         <translation>CG x ± %1 mm</translation>
     </message>
@@ -1445,6 +1457,11 @@
         <location filename="../../ui/widgets/calibration_table.cpp" line="172"/>
         <source>Expected afterwards (1 σ): %1</source>
         <translation>Forventet etterpå (1 σ): %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="181"/>
+        <source>The move is also a calibration: flown after it and analysed with this log as history, the next mission&apos;s survey should give %1 (1 σ).</source>
+        <translation>Flyttingen er også en kalibrering: fløyet etter den og analysert med denne loggen som historikk bør neste oppdrags kartlegging gi %1 (1 σ).</translation>
     </message>
 </context>
 <context>
@@ -3440,22 +3457,22 @@
 <context>
     <name>auv::ui::NumberInput</name>
     <message>
-        <location filename="../../ui/widgets/number_input.cpp" line="147"/>
+        <location filename="../../ui/widgets/number_input.cpp" line="161"/>
         <source>Enter a number.</source>
         <translation>Skriv inn et tall.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/number_input.cpp" line="149"/>
+        <location filename="../../ui/widgets/number_input.cpp" line="163"/>
         <source>&apos;%1&apos; is not a number.</source>
         <translation>«%1» er ikke et tall.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/number_input.cpp" line="151"/>
+        <location filename="../../ui/widgets/number_input.cpp" line="165"/>
         <source>The lowest accepted value is %1 %2.</source>
         <translation>Laveste godtatte verdi er %1 %2.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/number_input.cpp" line="153"/>
+        <location filename="../../ui/widgets/number_input.cpp" line="167"/>
         <source>The highest accepted value is %1 %2.</source>
         <translation>Høyeste godtatte verdi er %1 %2.</translation>
     </message>
@@ -5083,7 +5100,7 @@
     </message>
     <message>
         <location filename="../../ui/wizard/work_order.cpp" line="128"/>
-        <location filename="../../ui/wizard/work_order.cpp" line="200"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="202"/>
         <location filename="../../ui/wizard/glider_work_order.cpp" line="190"/>
         <source>Done by: ______________________   Signature: ______________________   Date: ____________</source>
         <translation>Utført av: ______________________   Signatur: ______________________   Dato: ____________</translation>
@@ -5095,39 +5112,39 @@
         <translation>Vannet i neste oppdrag</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="270"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="272"/>
         <source>What to change</source>
         <translation>Hva som skal endres</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="239"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="241"/>
         <source>Expected result</source>
         <translation>Forventet resultat</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="243"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="245"/>
         <source>Warnings</source>
         <translation>Advarsler</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="244"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="246"/>
         <source>⚠ %1</source>
         <translation>⚠ %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="258"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="260"/>
         <source>Steps and notes</source>
         <translation>Trinn og merknader</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="314"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="316"/>
         <source>Where (top view, bow to the right)</source>
         <translation>Hvor (sett ovenfra, baugen til høyre)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="346"/>
-        <location filename="../../ui/wizard/work_order.cpp" line="350"/>
-        <location filename="../../ui/wizard/work_order.cpp" line="375"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="348"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="352"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="377"/>
         <source>cannot write %1: check the folder and its permissions</source>
         <translation>kan ikke skrive %1: sjekk mappen og tilgangene</translation>
     </message>
@@ -5142,12 +5159,12 @@
         <translation>Rull %1 (bånd ±%2°)%3</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="248"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="250"/>
         <source>What was calibrated</source>
         <translation>Hva som ble kalibrert</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="253"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="255"/>
         <source>Calibration manoeuvre for the next mission</source>
         <translation>Kalibreringsmanøver for neste oppdrag</translation>
     </message>

@@ -286,11 +286,20 @@ TEST_F(EstimatePages, WithoutBgCgYAndRollAreNotKnownEverywhere) {
   EXPECT_EQ(order.manoeuvre.isEmpty(), !wiz->state().plan->calibration_manoeuvre.has_value());
   if (wiz->state().plan->calibration_manoeuvre) {
     const auto& legs = (*wiz->state().plan->calibration_manoeuvre)["legs"];
-    ASSERT_EQ(order.manoeuvre.size(), 2);
+    // The legs, the sigma expected after them and, with the same condition,
+    // what the move itself will calibrate (the plan's after_move_expected_sigma).
+    const auto& after = wiz->state().plan->after_move_net_sigma_kg;
+    ASSERT_EQ(order.manoeuvre.size(), after ? 3 : 2);
     ASSERT_GE(legs.size(), 1u);
     for (const auto& leg : legs) EXPECT_NE(order.manoeuvre.front().indexOf(QString::fromStdString(leg.get<std::string>())), -1);
-    EXPECT_TRUE(order.manoeuvre.back().startsWith("Expected afterwards (1 σ): net buoyancy ± ")) << order.manoeuvre.back().toStdString();
-    EXPECT_TRUE(find<QLabel>(*wiz, "calibration_manoeuvre")->isVisible());
+    EXPECT_TRUE(order.manoeuvre[1].startsWith("Expected afterwards (1 σ): net buoyancy ± ")) << order.manoeuvre[1].toStdString();
+    if (after) {
+      const QString want = QString("the next mission's survey should give net buoyancy ± %1 kg").arg(*after, 0, 'f', 2);
+      EXPECT_NE(order.manoeuvre.back().indexOf(want), -1) << order.manoeuvre.back().toStdString();
+    }
+    const QLabel* label = find<QLabel>(*wiz, "calibration_manoeuvre");
+    EXPECT_TRUE(label->isVisible());
+    EXPECT_EQ(label->text().contains("The move is also a calibration"), after.has_value()) << label->text().toStdString();
   }
 }
 

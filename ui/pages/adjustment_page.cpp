@@ -272,10 +272,13 @@ void AdjustmentPage::showCalibration() {
   calibration_->showRows(CalibrationTable::rowsFromJson(report.value("calibration", nlohmann::json::array())));
   const QStringList legs =
       state_.plan->calibration_manoeuvre ? CalibrationTable::manoeuvreLines(*state_.plan->calibration_manoeuvre) : QStringList();
-  manoeuvre_->setVisible(!legs.isEmpty());
+  const QString after = CalibrationTable::afterMoveLine(state_.plan->after_move_net_sigma_kg, state_.plan->after_move_x_sigma_m);
+  manoeuvre_->setVisible(!legs.isEmpty() || !after.isEmpty());
+  QStringList text;
   if (!legs.isEmpty())
-    manoeuvre_->setText(tr("<b>Calibration manoeuvre</b> to add to the next mission: %1")
-                            .arg(legs.join(". ").toHtmlEscaped()));
+    text << tr("<b>Calibration manoeuvre</b> to add to the next mission: %1").arg(legs.join(". ").toHtmlEscaped());
+  if (!after.isEmpty()) text << after.toHtmlEscaped();
+  manoeuvre_->setText(text.join("<br>"));
 }
 
 void AdjustmentPage::updateProgress() {

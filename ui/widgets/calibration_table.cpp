@@ -174,4 +174,13 @@ QStringList CalibrationTable::manoeuvreLines(const nlohmann::json& m) {
   return out;
 }
 
+QString CalibrationTable::afterMoveLine(std::optional<double> net_sigma_kg, std::optional<double> x_sigma_m) {
+  if (!net_sigma_kg) return {};
+  QString s = tr("net buoyancy ± %1 kg").arg(fixed(*net_sigma_kg, 2));
+  if (x_sigma_m) s += ", " + tr("CG x ± %1 mm").arg(fixed(*x_sigma_m * 1e3, *x_sigma_m < 1e-4 ? 2 : 1));  // not "± 0.0"
+  return tr("The move is also a calibration: flown after it and analysed with this log as history, the next "
+            "mission's survey should give %1 (1 σ).")
+      .arg(s);
+}
+
 }  // namespace auv::ui

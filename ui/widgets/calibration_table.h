@@ -10,6 +10,7 @@
 #include <QStringList>
 #include <QTableWidget>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ class CalibrationTable : public QTableWidget {
   // The manoeuvre {legs, expected_sigma} as lines: the legs (one line,
   // "; " between them), then the σ expected after it. Empty when `m` is not one.
   static QStringList manoeuvreLines(const nlohmann::json& m);
+  // The plan's after_move_expected_sigma in one sentence (empty when unset):
+  // the move itself calibrates the next mission's analysis.
+  static QString afterMoveLine(std::optional<double> net_sigma_kg, std::optional<double> x_sigma_m);
   static QString source(bool identified);
 };
 

@@ -120,7 +120,9 @@ constexpr Advice kAdvice[] = {
   {"plan.classic_table", QT_TRANSLATE_NOOP("Advice", "Classic table (thesis App. E): %1, pitch error %2, roll error %3; it moves one %4 piece per point and mission, whatever the size of the error.")},
   {"plan.classic_blocked", QT_TRANSLATE_NOOP("Advice", "The classic table asks to remove a piece where none is installed, so it changes nothing.")},
   {"plan.classic_standard_kit", QT_TRANSLATE_NOOP("Advice", "The classic table uses the standard kit only.")},
-  {"plan.manoeuvre", QT_TRANSLATE_NOOP("Advice", "The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short legs at different speeds); it would bring the uncertainty to about %4 kg.")},
+  {"plan.manoeuvre", QT_TRANSLATE_NOOP("Advice", "The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short leg(s)); with this log alone it would bring the uncertainty to about %4 kg.")},
+  {"plan.after_move", QT_TRANSLATE_NOOP("Advice", "This move is also a calibration: flown after it and analysed with the last log as history (the known change of mass and moment between them), the next mission's survey should tell the net buoyancy to about ±%1 kg and CG x to about ±%2 mm, enough for a second move into the band.")},
+  {"plan.after_move_still_wide", QT_TRANSLATE_NOOP("Advice", "This move is also a calibration, but flown after it and analysed with the last log as history the next mission's survey would still leave the net buoyancy at about ±%1 kg (CG x about ±%2 mm), too wide for the band: fly the calibration manoeuvre as well.")},
   {"plan.roll_at_cruise", QT_TRANSLATE_NOOP("Advice", "Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).")},
   // Model check (core/discrepancy/check_messages.h).
   {"check.constant", QT_TRANSLATE_NOOP("Advice", "%1 is a constant %2 %3 everywhere (all phases, depths and speeds)")},

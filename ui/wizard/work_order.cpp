@@ -197,6 +197,8 @@ WorkOrder makeWorkOrder(const WizardState& s, const PlanBasis& basis, TimePoint 
   if (basis.report.is_object())
     w.calibration = CalibrationTable::lines(CalibrationTable::rowsFromJson(basis.report.value("calibration", nlohmann::json::array())));
   if (p.calibration_manoeuvre) w.manoeuvre = CalibrationTable::manoeuvreLines(*p.calibration_manoeuvre);
+  if (const QString after = CalibrationTable::afterMoveLine(p.after_move_net_sigma_kg, p.after_move_x_sigma_m); !after.isEmpty())
+    w.manoeuvre << after;
   w.signature = WorkOrder::tr("Done by: ______________________   Signature: ______________________   Date: ____________");
   return w;
 }

@@ -158,6 +158,11 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
     writeInterchangeCsv(f.log, dump_prefix + ".csv");
     std::ofstream(dump_prefix + ".json") << rj.dump(1) << "\n";
   }
+  if (const auto& d = rj["details"]; d.contains("auv_estimate") && d["auv_estimate"].contains("after_move_expected_sigma"))
+  {
+    r.after_move_expected_sigma_kg = d["auv_estimate"]["after_move_expected_sigma"]["net_buoyancy_kg"].get<double>();
+    r.after_move_expected_x_sigma_mm = d["auv_estimate"]["after_move_expected_sigma"]["cg_x_mm"].get<double>();
+  }
   if (rj.contains("calibration"))
     for (const auto& q : rj["calibration"]) {
       analysis::CalibrationParameter c;
@@ -262,6 +267,8 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   r.plan_pitch_deg = plan.flight_pitch_after_deg.value_or(plan.predicted.pitch_deg);
   r.plan_roll_deg = plan.predicted.roll_deg;
   r.manoeuvre_asked = plan.calibration_manoeuvre.has_value();
+  r.plan_after_move_sigma_kg = plan.after_move_net_sigma_kg;
+  for (const Message& n : plan.notes) r.plan_note_ids.push_back(n.id());
   if (r.manoeuvre_asked)
     r.manoeuvre_expected_sigma_kg = plan.calibration_manoeuvre->at("expected_sigma").at("net_buoyancy_kg").get<double>();
   if (r.manoeuvre_asked && plan.calibration_manoeuvre->contains("flight"))
@@ -288,6 +295,8 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   r.twice = true;
   r.net2_err_kg = rep2.net_buoyancy_kg.value - (rep2.density_kgm3.mean * profile_.hull.volumeAt(rep2.temperature_degC.mean, rep2.pressure_dbar.mean) - f2.mass_kg);
   r.net2_sigma_kg = rep2.net_buoyancy_kg.sigma;
+  r.x2_sigma_mm = rep2.cg_x_mm.sigma;
+  r.x2_err_mm = rep2.cg_x_mm.value - units::mToMm(f2.cg_x_m);
   return r;
 }
 

@@ -4,6 +4,7 @@
 // the analysis sees only the nominal profile and the log, and its estimate,
 // sigma and one-move plan are judged against what the simulator flew.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,12 +40,16 @@ struct CaseResult {
   bool manoeuvre_asked = false, manoeuvre_flown = false;  // by the first plan; in the second mission
   double manoeuvre_expected_sigma_kg = 0.0;  // the net buoyancy sigma the first plan predicted after it
   nlohmann::json manoeuvre_flight;  // the first plan's calibration_manoeuvre.flight
+  double after_move_expected_sigma_kg = 0.0;  // the first analysis's prediction of net2_sigma_kg (0 = none)
+  std::optional<double> plan_after_move_sigma_kg;  // the first plan's after_move_expected_sigma, when it states one
+  std::vector<std::string> plan_note_ids;          // the first plan's notes
   double plan_band_lo_kg = 0.0, plan_band_hi_kg = 0.0, plan_net_kg = 0.0;
   double plan_pitch_deg = 0.0, plan_roll_deg = 0.0;  // predicted flight pitch (at rest if unknown), roll
   double kit_best_roll_deg = 0.0;  // the planner's roll when given the truth: what the kit's capacities allow
   double kit_best_pitch_deg = 0.0;  // the planner's flight pitch at cruise when given the truth
   Outcome one, two;
   double net2_err_kg = 0.0, net2_sigma_kg = 0.0;  // second mission's joint estimate
+  double x2_err_mm = 0.0, x2_sigma_mm = 0.0, after_move_expected_x_sigma_mm = 0.0;
 };
 
 class Harness {
