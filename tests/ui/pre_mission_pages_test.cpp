@@ -133,6 +133,22 @@ TEST_F(PreMissionPages, PlanFromTheSessionsAnalysisAdjustAndSave) {
   EXPECT_NEAR(find<NumberInput>(wiz, "next_temperature")->value(), a.temperature_degC.mean, 0.006);
   EXPECT_NEAR(find<NumberInput>(wiz, "next_depth")->value(), a.depth_m.mean, 0.06);
   EXPECT_FALSE(find<NumberInput>(wiz, "next_temperature")->isEnabled());
+  // Shown to the CTD's resolution, not every digit of a mean of thousands
+  // of samples; the plan takes the exact means.
+  for (const char* f : {"next_temperature", "next_salinity"}) {
+    const QString t = find<NumberInput>(wiz, f)->lineEdit()->text();
+    EXPECT_LE(t.size() - t.indexOf('.') - 1, 3) << f << ": " << t.toStdString();
+  }
+  for (const char* f : {"next_depth", "next_deepest"}) {
+    const QString t = find<NumberInput>(wiz, f)->lineEdit()->text();
+    EXPECT_LE(t.size() - t.indexOf('.') - 1, 1) << f << ": " << t.toStdString();
+  }
+  ASSERT_TRUE(wiz.state().next_water.has_value());
+  // (to the report's 6 decimals: the estimate passes through its JSON)
+  EXPECT_NEAR(wiz.state().next_water->temperature_degC, a.temperature_degC.mean, 1e-6);
+  EXPECT_NEAR(wiz.state().next_water->salinity_psu, a.salinity_psu.mean, 1e-6);
+  EXPECT_NEAR(wiz.state().next_water->depth_m, a.depth_m.mean, 1e-6);
+  EXPECT_GE(find<NumberInput>(wiz, "next_deepest")->value(), a.depth_m.mean);
   EXPECT_TRUE(find<QCheckBox>(wiz, "optional_pieces")->isVisible());  // HUGIN has the 0.5 kg piece
   EXPECT_TRUE(find<QLabel>(wiz, "temperature_stale")->text().isEmpty());
 

@@ -22,6 +22,14 @@
 #include "wizard/operator_wizard.h"
 
 namespace auv::ui {
+
+namespace {
+double roundedTo(double v, int decimals) {
+  const double f = std::pow(10.0, decimals);
+  return std::round(v * f) / f;
+}
+}  // namespace
+
 namespace {
 
 QString q(const std::string& s) { return QString::fromStdString(s); }
@@ -196,9 +204,16 @@ void PreMissionPage::initializePage() {
   const bool have_entered = state_.next_water.has_value();
   const bool operator_values = have_entered && state_.next_water_source == "operator";
   PlannedWater w = state_.next_water.value_or(PlannedWater{});
+  double exact_depth_m = w.depth_m;
   if (!have_entered) {
     w.latitude_deg = state_.crane.water.latitude_deg;
     if (basis_) w = lastMissionWater(basis_->start.estimate, w.latitude_deg);
+    exact_depth_m = w.depth_m;
+    // Defaults from the last mission, shown (and, once the operator takes
+    // them as theirs, used) to the CTD's resolution.
+    w.temperature_degC = roundedTo(w.temperature_degC, 3);
+    w.salinity_psu = roundedTo(w.salinity_psu, 3);
+    w.depth_m = roundedTo(w.depth_m, 1);
   }
   temperature_->setValue(w.temperature_degC);
   salinity_->setValue(w.salinity_psu);
@@ -214,7 +229,9 @@ void PreMissionPage::initializePage() {
         for (double d : c.values)
           if (std::isfinite(d)) deepest = std::max(deepest, d);
   }
-  deepest_->setValue(std::max(deepest, w.depth_m));
+  // A default from the log shows to 0.1 m, rounded up: never shallower than it.
+  deepest_->setValue(state_.next_deepest_m > 0.0 ? std::max(deepest, w.depth_m)
+                                                 : std::ceil(std::max(deepest, exact_depth_m) * 10.0 - 1e-9) / 10.0);
   src_ctd_->setEnabled(basis_.has_value() && !stale_);
   if (stale_ || !basis_ || operator_values) {
     src_operator_->setChecked(true);
@@ -297,12 +314,14 @@ void PreMissionPage::showBasis() {
 void PreMissionPage::applySource() {
   const bool ctd = src_ctd_->isChecked();
   if (ctd && basis_) {
+    // Shown to the CTD's resolution (a mean of thousands of samples would
+    // show every digit: "7.542212 °C"); the plan takes the exact means (store).
     const PlannedWater w = lastMissionWater(basis_->start.estimate, latitude_->value());
     const bool was = loading_;
     loading_ = true;
-    temperature_->setValue(w.temperature_degC);
-    salinity_->setValue(w.salinity_psu);
-    depth_->setValue(w.depth_m);
+    temperature_->setValue(roundedTo(w.temperature_degC, 3));
+    salinity_->setValue(roundedTo(w.salinity_psu, 3));
+    depth_->setValue(roundedTo(w.depth_m, 1));
     loading_ = was;
   }
   // The CTD's values are what they are; the operator's are typed.
@@ -313,9 +332,13 @@ bool PreMissionPage::temperatureEntered() const { return temperature_->value() >
 
 void PreMissionPage::store() {
   PlannedWater w;
-  w.temperature_degC = temperature_->value();
-  w.salinity_psu = salinity_->value();
-  w.depth_m = depth_->value();
+  if (src_ctd_->isChecked() && basis_) {
+    w = lastMissionWater(basis_->start.estimate, latitude_->value());
+  } else {
+    w.temperature_degC = temperature_->value();
+    w.salinity_psu = salinity_->value();
+    w.depth_m = depth_->value();
+  }
   w.latitude_deg = latitude_->value();
   state_.next_water = w;
   state_.next_deepest_m = deepest_->value();
@@ -331,11 +354,12 @@ std::optional<PreMissionPlan> PreMissionPage::computePlan(QString& error) {
     error = basis_error_;
     return std::nullopt;
   }
-  if (deepest_->value() < depth_->value()) {
+  const double op_depth = state_.next_water ? state_.next_water->depth_m : depth_->value();  // exact (store)
+  if (deepest_->value() < op_depth) {
     error = tr("Deepest depth: %1 m is shallower than the operating depth (%2 m); enter the deepest depth the "
                "mission goes to, at least %2 m.")
                 .arg(fixed(deepest_->value(), 1))
-                .arg(fixed(depth_->value(), 1));
+                .arg(fixed(std::ceil(op_depth * 10.0 - 1e-9) / 10.0, 1));
     return std::nullopt;
   }
   if (!temperatureEntered()) {
