@@ -100,6 +100,7 @@ TEST_F(LogImport, ReadsTheSurveyAndSavesTheMission) {
   EXPECT_NE(summary.indexOf("over 1.50 h"), -1) << summary.toStdString();
   EXPECT_NE(summary.indexOf("Skipped 0 rows"), -1);
   EXPECT_NE(summary.indexOf("commanded depth ✓"), -1);
+  EXPECT_FALSE(find<QListWidget>(*wiz, "problems")->isVisible());  // no empty box when nothing went wrong
   EXPECT_TRUE(wiz->currentPage()->isComplete());
   shot(*wiz, "20_log_import");
   EXPECT_EQ(QSettings().value("paths/last_log_folder").toString(), dirPath());
@@ -177,6 +178,7 @@ TEST_F(LogImport, DamagedRowsAreSkippedAndExplained) {
   EXPECT_NE(summary.indexOf("commanded depth ✗"), -1);
   auto* problems = find<QListWidget>(*wiz, "problems");
   ASSERT_GE(problems->count(), 3);
+  EXPECT_TRUE(problems->isVisible());
   EXPECT_NE(problems->item(0)->text().indexOf("damaged.csv:4"), -1) << problems->item(0)->text().toStdString();
   shot(*wiz, "20b_log_import_damaged");
 }

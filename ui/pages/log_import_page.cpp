@@ -143,6 +143,10 @@ LogImportPage::LogImportPage(WizardState& state) : state_(state) {
   lay->addWidget(installed_box_);
   lay->addWidget(summary_);
   lay->addWidget(problems_, 1);
+  // Shown only with something in it: an empty white box under "Nothing was
+  // skipped" read as a chart that failed to draw (found under Xvfb).
+  problems_->hide();
+  lay->addStretch(0);
 
   connect(browse_, &QPushButton::clicked, this, [this] { browse(); });
   connect(import_, &QPushButton::clicked, this, [this] { startImport(path_->text()); });
@@ -261,6 +265,7 @@ void LogImportPage::startImport(const QString& path, std::optional<ColumnMapping
   state_.log_file = path.toStdString();
   summary_->clear();
   problems_->clear();
+  problems_->hide();
   status_->setStyleSheet(QString());
   status_->setText(tr("Reading %1…").arg(paths.size() > 1 ? tr("%1 and %2 more").arg(first.fileName()).arg(paths.size() - 1)
                                                            : first.fileName()) +
@@ -340,6 +345,7 @@ void LogImportPage::mappingAccepted() {
 
 void LogImportPage::showSummary() {
   problems_->clear();
+  problems_->hide();
   if (!state_.log || !state_.log_report) {
     summary_->clear();
     return;
@@ -373,6 +379,7 @@ void LogImportPage::showSummary() {
   // The file is named above: each problem starts with just its name.
   const QString full = q(state_.log_file), name = QFileInfo(full).fileName();
   for (const auto& p : r.problems) problems_->addItem(q(p.text()).replace(full, name));
+  problems_->setVisible(problems_->count() > 0);
 }
 
 bool LogImportPage::isComplete() const { return state_.log != nullptr && !job_.running(); }
