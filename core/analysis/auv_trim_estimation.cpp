@@ -326,11 +326,12 @@ std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoeffic
 // The next mission after the move: this log's level segments flown again
 // (same speeds, durations and noise) at the state a plan aims for, net
 // buoyancy mid-band (0.6 kg) or the safety margin, and the CG x that flies
-// level at the log's mean speed. Analysed with this log as history, the known change of mass
-// and moment between them separates what this log alone cannot: on the
-// identification truths a second mission so analysed reached 0.03-0.07 kg
-// where the manoeuvre predicted 0.6-0.9 (docs/decisions/analysis-calibration.md).
-// Only the regressors enter the covariance, so the known offsets are not needed.
+// level at the log's mean speed. Analysed with this log as history, the
+// known change of mass and moment between them separates what this log
+// alone cannot: on the identification truths a second mission so analysed
+// reached 0.02-0.03 kg (median) where the manoeuvre predicted 0.6-0.9
+// (docs/decisions/analysis-calibration.md). Only the regressors enter the
+// covariance, so the known offsets of the move are not needed.
 std::optional<AuvTrimEstimate::AfterMove> predictAfterMove(const SteadyHydroCoefficients& nominal, const Model& m,
                                                            const SteadyCalibration& cal, const std::vector<Meas>& meas,
                                                            const AuvTrimEstimate& est) {
@@ -340,10 +341,11 @@ std::optional<AuvTrimEstimate::AfterMove> predictAfterMove(const SteadyHydroCoef
   // prediction was up to 14 times too sharp for vehicles the margin sent
   // 5-7 kg light (seed 3122), at the margin at most 2.9.
   const double kNetAfter_kg = std::max(0.6, 1.645 * std::sqrt(cal.cov(kNet, kNet)) / units::g0);
+  constexpr double kLevelRate_mps = 0.02;  // SegmentOptions::level_rate_mps: below it a segment is level
   double su = 0.0;
   int level = 0;
   for (const Meas& q : meas)
-    if (q.v[kRate] == 0.0 || std::abs(q.v[kRate]) < 0.02) su += q.v[kSpeed], ++level;
+    if (std::abs(q.v[kRate]) < kLevelRate_mps) su += q.v[kSpeed], ++level;
   if (level == 0 || !(su > 0.0)) return std::nullopt;
   auto flight = [&](double x_g, double u) {
     LevelFlightInput in;
@@ -368,7 +370,7 @@ std::optional<AuvTrimEstimate::AfterMove> predictAfterMove(const SteadyHydroCoef
   if (!f1.ok) return std::nullopt;
   std::vector<CalibrationSegment> planned;
   for (const Meas& q : meas) {
-    if (!(std::abs(q.v[kRate]) < 0.02)) continue;
+    if (!(std::abs(q.v[kRate]) < kLevelRate_mps)) continue;
     const LevelFlight f = flight(x1, q.v[kSpeed]);
     if (!f.ok) continue;
     CalibrationSegment c;

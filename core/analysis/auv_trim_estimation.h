@@ -120,8 +120,9 @@ struct AuvTrimEstimate {
   };
   std::optional<Manoeuvre> manoeuvre;
   // The move is itself a calibration (item 3): the next mission's survey,
-  // flown after a move to mid-band and level flight and analysed with this
-  // log as history, predicted from the same Fisher information.
+  // flown after a move to mid-band (or the safety margin) and level flight
+  // and analysed with this log as history, predicted from the same Fisher
+  // information.
   struct AfterMove {
     double net_sigma_kg = 0.0, x_sigma_m = 0.0;
     double net_kg = 0.0, x_g_m = 0.0;  // the state assumed after the move
