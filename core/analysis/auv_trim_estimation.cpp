@@ -241,6 +241,21 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
   }
 }
 
+// The calibrated vehicle in steady flight at net buoyancy net_n and CG x
+// x_g (BG as calibrated, this log's water): what a planned segment would log.
+LevelFlight plannedFlight(const SteadyHydroCoefficients& calibrated, const Model& m, const SteadyCalibration& cal,
+                          double net_n, double x_g, double speed_mps, double depth_rate_mps) {
+  LevelFlightInput in;
+  in.weight_n = m.W;
+  in.buoyancy_n = m.W + net_n;
+  in.x_g_m = x_g;
+  in.bg_m = cal.p(kBg);
+  in.speed_mps = speed_mps;
+  in.density_kgm3 = m.rho;
+  in.depth_rate_mps = depth_rate_mps;
+  return solveLevelFlight(calibrated, in);
+}
+
 // The manoeuvre: a descent and a climb of 30 m at 160 rpm at a steady
 // 0.25 m/s, plus 5-min level legs at 130/160/190 rpm at one depth when the
 // log has fewer than three speeds; flown as the calibrated model predicts,
@@ -282,18 +297,11 @@ std::optional<AuvTrimEstimate::Manoeuvre> planManoeuvre(const SteadyHydroCoeffic
   AuvTrimEstimate::Manoeuvre man;
   std::vector<CalibrationSegment> planned;
   auto add = [&](double rpm, double depth_rate_mps, double seconds) {
-    LevelFlightInput in;
-    in.weight_n = m.W;
-    in.buoyancy_n = m.W + cal.p(kNet);
-    in.x_g_m = cal.p(kXg);
-    in.bg_m = cal.p(kBg);
-    in.speed_mps = per_rpm * rpm;
-    in.density_kgm3 = m.rho;
-    in.depth_rate_mps = depth_rate_mps;
-    const LevelFlight f = solveLevelFlight(*est.calibrated, in);
+    const double speed_mps = per_rpm * rpm;
+    const LevelFlight f = plannedFlight(*est.calibrated, m, cal, cal.p(kNet), cal.p(kXg), speed_mps, depth_rate_mps);
     if (!f.ok) return false;
     CalibrationSegment c;
-    c.v = {in.speed_mps, f.pitch_rad, 0.0, f.elevator_deg + est.elevator_bias_deg, depth_rate_mps};
+    c.v = {speed_mps, f.pitch_rad, 0.0, f.elevator_deg + est.elevator_bias_deg, depth_rate_mps};
     c.se = scaledTo(seconds);
     c.density_kgm3 = m.rho;
     planned.push_back(c);
@@ -348,14 +356,7 @@ std::optional<AuvTrimEstimate::AfterMove> predictAfterMove(const SteadyHydroCoef
     if (std::abs(q.v[kRate]) < kLevelRate_mps) su += q.v[kSpeed], ++level;
   if (level == 0 || !(su > 0.0)) return std::nullopt;
   auto flight = [&](double x_g, double u) {
-    LevelFlightInput in;
-    in.weight_n = m.W;
-    in.buoyancy_n = m.W + kNetAfter_kg * units::g0;
-    in.x_g_m = x_g;
-    in.bg_m = cal.p(kBg);
-    in.speed_mps = u;
-    in.density_kgm3 = m.rho;
-    return solveLevelFlight(*est.calibrated, in);
+    return plannedFlight(*est.calibrated, m, cal, kNetAfter_kg * units::g0, x_g, u, 0.0);
   };
   // CG x for level flight: secant steps on the pitch at the mean speed.
   const double u_mean = su / level;
