@@ -65,7 +65,7 @@ EstimatedVehicle estimatedVehicle(const VehicleProfile& v, const HullModel& hull
   out.cg_x_assumed = !e.cg_x_m;
   out.cg_y_assumed = !e.cg_y_m;
   const Eigen::Vector3d cg(v.cb_m.x() + e.cg_x_m.value_or(0.0), v.cb_m.y() + e.cg_y_m.value_or(0.0),
-                           v.cb_m.z() + v.bg_m);
+                           v.cb_m.z() + e.bg_m.value_or(v.bg_m));
   out.mass.mass_kg = mass;
   out.mass.cg_m = cg;
   out.mass.moment_kgm = mass * cg;

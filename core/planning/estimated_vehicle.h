@@ -3,8 +3,9 @@
 // buoyancy in the log's water, so the mass is
 //   m = rho_log V(T_log, p_log) - net_log
 // (the hull volume law from the profile, or from accepted model terms), and
-// the CG is CB + the identified offset in x and y, with z from the profile's
-// BG (a level-flight log cannot see CG height). Its buoyancy elsewhere is
+// the CG is CB + the identified offset in x and y, with z from the BG the
+// analysis used (the roll test's when measured, else the profile's: a
+// level-flight log cannot see CG height). Its buoyancy elsewhere is
 // rho V(T, p) of that water: nothing measured in one water is carried to
 // another as a net buoyancy.
 #include <Eigen/Core>

@@ -79,6 +79,12 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
     const nlohmann::json& d = report["details"]["auv_estimate"];
     if (d.is_object() && d.contains("calibrated_hydrodynamics") && d["calibrated_hydrodynamics"].is_object())
       e.calibrated_hydrodynamics = d["calibrated_hydrodynamics"];
+    if (d.is_object() && d.contains("bg_mm") && d["bg_mm"].is_number() && d.value("bg_source", "profile") != "profile") {
+      const double bg_mm = d["bg_mm"].get<double>();
+      if (!(bg_mm > 0.0 && bg_mm < 500.0))
+        JsonReader(d, file, "details.auv_estimate").fail("bg_mm", "BG must be above 0 and below 500 mm", "give the roll test's BG in mm");
+      e.bg_m = units::mmToM(bg_mm);
+    }
     if (d.is_object() && d.contains("calibration_manoeuvre") && d["calibration_manoeuvre"].is_object())
       e.calibration_manoeuvre = d["calibration_manoeuvre"];
     if (d.is_object() && d.contains("after_move_expected_sigma") && d["after_move_expected_sigma"].is_object()) {

@@ -23,6 +23,9 @@ struct TrimEstimate {
   double cruise_rpm = 0.0;
   double cruise_speed_mps = 0.0;  // 0 = unknown (no flying-pitch prediction)
   double cg_x_sigma_m = 0.0, cg_y_sigma_m = 0.0;
+  // BG of the analysed vehicle when measured (roll test); nullopt = the
+  // profile's. The cruise CG y is BG sin(roll): the plan's roll must use the same BG.
+  std::optional<double> bg_m;
   WaterState water;                    // in situ where net buoyancy was identified
   double salinity_psu = 35.0;
   double depth_m = 0.0;

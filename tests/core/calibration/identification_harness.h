@@ -35,6 +35,9 @@ struct CaseResult {
   struct Outcome {
     bool spec = false, net_ok = false, pitch_ok = false, roll_ok = false, safe = false;
     double net_op_kg = 0.0, min_net_kg = 0.0, pitch_deg = 0.0, roll_deg = 0.0, roll_reach_deg = 0.0;
+    // The planner's roll and flight pitch when given the truth and the pieces
+    // installed before this move: what the kit's capacities allow.
+    double kit_best_roll_deg = 0.0, kit_best_pitch_deg = 0.0;
   };
   bool looped = false, twice = false;  // twice: the second mission's joint estimate existed
   bool manoeuvre_asked = false, manoeuvre_flown = false;  // by the first plan; in the second mission

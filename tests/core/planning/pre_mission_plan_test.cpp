@@ -9,6 +9,7 @@
 #include "common/input_error.h"
 #include "common/units.h"
 #include "plan_fixture.h"
+#include "planning/installed_prediction.h"
 
 using namespace auv;
 using namespace auv::planning_test;
@@ -321,6 +322,57 @@ TEST(TrimEstimateFromReport, PlansRollOnTheCruiseEquivalentCgY) {
   double moment_y = 0.0;
   for (std::size_t i = 0; i < p.points.size(); ++i) moment_y += p.points[i].add_kg * hugin().points[i].position_m.y();
   EXPECT_GT(moment_y, 0.0);
+}
+
+TEST(TrimEstimateFromReport, PlansRollWithTheBgTheRollWasMeasuredWith) {
+  // The analysis turned a 14 deg cruise roll into y = BG sin(roll) with the
+  // roll test's BG (14 mm, the profile says 20 mm). The plan must roll the
+  // vehicle back with the same BG: with the profile's, 3.4 mm of side offset
+  // reads as 9.7 deg and every lateral move is predicted 30 % too small.
+  nlohmann::json r = nlohmann::json::parse(R"({
+    "net_buoyancy_kg": 2.5, "net_buoyancy_sigma_kg": 0.05,
+    "cg_offset_mm": {"x": 0.0, "y": 0.3}, "cg_offset_sigma_mm": {"x": 0.05, "y": 0.01},
+    "cruise": {"prop_rpm": 160, "roll_deg": 14.0, "roll_sigma_deg": 0.01, "cg_y_mm": 3.3870, "cg_y_sigma_mm": 0.004},
+    "water": {"temperature_degC": 8.0, "salinity_psu": 35.0, "pressure_dbar": 100.0, "depth_m": 99.0},
+    "details": {"auv_estimate": {"bg_mm": 14.0, "bg_source": "--bg-mm"}}
+  })");
+  const TrimEstimate e = trimEstimateFromReport(r, "a.json");
+  ASSERT_TRUE(e.bg_m.has_value());
+  EXPECT_DOUBLE_EQ(*e.bg_m, 0.014);
+  PreMissionInput in = baseInput();
+  in.estimate = e;
+  in.policy = PlanPolicy::Exact;
+  in.use_optional_pieces = true;
+  const PreMissionPlan p = planPreMission(hugin(), in);
+  // Within 0.1 deg: the static trim also holds (W - B) r_CB, which this
+  // hand sum leaves out; the profile's BG would be 4 deg away.
+  EXPECT_NEAR(p.roll_before_deg, units::radToDeg(std::atan(3.387 / 14.0)), 0.1);
+  // A side move the operator makes instead, by hand: 9.6 kg to starboard
+  // (the points lie on the CB's plane, so the pieces also raise the CG).
+  const VehicleProfile& v = hugin();
+  const std::vector<double> after = {in.installed_kg[0] + 4.8, in.installed_kg[1], in.installed_kg[2] + 4.8, in.installed_kg[3]};
+  const InstalledPrediction ip = predictInstalled(v, p, in.installed_kg, after);
+  const double W = p.vehicle.mass.mass_kg;
+  double m = W, my = W * 0.003387, mz = W * 0.014;
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    const double dm = after[i] - in.installed_kg[i];
+    m += dm;
+    my += dm * (v.points[i].position_m.y() - v.cb_m.y());
+    mz += dm * (v.points[i].position_m.z() - v.cb_m.z());
+  }
+  EXPECT_NEAR(ip.roll_deg, units::radToDeg(std::atan2(my / m, mz / m)), 0.1);
+  EXPECT_GT(ip.roll_deg, 20.0);  // with the profile's 20 mm it would read 15.5 deg
+  // The profile's BG only where the analysis used it.
+  r["details"]["auv_estimate"]["bg_source"] = "profile";
+  EXPECT_FALSE(trimEstimateFromReport(r, "a.json").bg_m.has_value());
+  r["details"]["auv_estimate"]["bg_source"] = "--bg-mm";
+  r["details"]["auv_estimate"]["bg_mm"] = -3.0;
+  try {
+    trimEstimateFromReport(r, "a.json");
+    FAIL();
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("bg_mm"), std::string::npos) << err.what();
+  }
 }
 
 TEST(PreMissionPlan, UnidentifiedCgIsAssumedAtCbWithAWarning) {
