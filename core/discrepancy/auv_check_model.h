@@ -53,6 +53,10 @@ struct AuvCheckOptions {
   double row_interval_s = 0.0;             // 0 = the pitch channel's median interval (at least 0.2 s)
   std::size_t max_rows = 40000;
   double settle_s = 60.0;                  // simulation error not scored this long after the start
+  // Short-horizon replays (a transient term's held-out test) restart from
+  // the logged state this often and are scored after short_settle_s.
+  double short_horizon_s = 90.0;
+  double short_settle_s = 15.0;
   double replay_dt_s = 0.05;
   double min_depth_m = 1.0;                // rows shallower are surface rows (not in the equation error)
 };
@@ -82,6 +86,7 @@ class AuvCheckModel final : public CheckModel {
     return {Channel::kDepth, Channel::kPitch, Channel::kRoll, Channel::kSpeed, Channel::kVerticalVelocity};
   }
   void simulationError(const Params& p, std::vector<double>& out) const override;
+  void shortHorizonSimulationError(const Params& p, std::vector<double>& out) const override;
   double netBuoyancyKg(const Params& p) const override;
   bool hasCg() const override { return true; }
   double cgX(const Params& p) const override;
@@ -97,6 +102,8 @@ class AuvCheckModel final : public CheckModel {
   double profileTorque() const;
 
  private:
+  // Observed - replayed at the rows; restart_every_s > 0 replays in horizons.
+  void replayError(const Params& p, double restart_every_s, double settle_s, std::vector<double>& out) const;
   // Smoothed states on the uniform grid (valid = every field finite).
   struct GridState {
     bool valid = false;

@@ -24,16 +24,27 @@ HeldOutScorer::HeldOutScorer(const FitSetup& s, const std::vector<std::uint32_t>
   halfFit_.resize(2);
   for (std::uint32_t i : fitRows) halfFit_[static_cast<std::size_t>(halfOfRow_[i])].push_back(i);
 
+  baseParams_ = base;
   base_ = score({}, base);
-  const std::size_t SC = simCh_.size();
-  simRef_.resize(SC);
-  for (std::size_t c = 0; c < SC; ++c) {
-    const double f = channelFloor(simCh_[c]);
-    simRef_[c] = std::max(base_.sim_n[c] > 0 ? base_.sim_sse[c] / base_.sim_n[c] : 0.0, f * f);
-  }
+  simRef_ = meanSquares(base_, simCh_);
 }
 
-HeldOut HeldOutScorer::score(const std::vector<std::size_t>& terms, const Params& start) const {
+std::vector<double> HeldOutScorer::meanSquares(const HeldOut& h, const std::vector<Channel>& ch) {
+  std::vector<double> r(ch.size());
+  for (std::size_t c = 0; c < ch.size(); ++c) {
+    const double f = channelFloor(ch[c]);
+    r[c] = std::max(h.sim_n[c] > 0 ? h.sim_sse[c] / h.sim_n[c] : 0.0, f * f);
+  }
+  return r;
+}
+
+const std::vector<double>& HeldOutScorer::references(bool short_horizons) const {
+  if (!short_horizons) return simRef_;
+  if (simRefShort_.empty()) simRefShort_ = meanSquares(score({}, baseParams_, true), simCh_);
+  return simRefShort_;
+}
+
+HeldOut HeldOutScorer::score(const std::vector<std::size_t>& terms, const Params& start, bool short_horizons) const {
   const FitSetup& s = s_;
   const std::size_t simC = simCh_.size();
   HeldOut h;
@@ -55,7 +66,10 @@ HeldOut HeldOutScorer::score(const std::vector<std::size_t>& terms, const Params
       h.prior_z2[k] += 0.5 * z * z;
     }
     std::vector<double> sim;
-    s.m.simulationError(f.params, sim);
+    if (short_horizons)
+      s.m.shortHorizonSimulationError(f.params, sim);
+    else
+      s.m.simulationError(f.params, sim);
     const std::vector<double> eq = residualsAt(s, f.params, all);
     for (std::size_t i = 0; i < N; ++i) {
       if (halfOfRow_[i] == half) continue;
@@ -78,10 +92,11 @@ HeldOut HeldOutScorer::score(const std::vector<std::size_t>& terms, const Params
   return h;
 }
 
-double HeldOutScorer::cost(const HeldOut& h) const {
+double HeldOutScorer::cost(const HeldOut& h, bool short_horizons) const {
+  const std::vector<double>& ref = references(short_horizons);
   double c = 0.0;
   for (std::size_t k = 0; k < simCh_.size(); ++k)
-    if (h.sim_n[k] > 0) c += h.sim_sse[k] / h.sim_n[k] / simRef_[k];
+    if (h.sim_n[k] > 0) c += h.sim_sse[k] / h.sim_n[k] / ref[k];
   // Only independent measurements are held-out data; a calibration
   // constant's soft prior is not (a term must not win by pulling it back).
   for (std::size_t k = 0; k < h.prior_z2.size(); ++k)

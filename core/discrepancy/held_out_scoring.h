@@ -26,25 +26,32 @@ class HeldOutScorer {
   HeldOutScorer(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, const Params& base,
                 std::vector<std::string>& warnings);
 
-  // Ballast state plus `terms`, fitted from `start`.
-  HeldOut score(const std::vector<std::size_t>& terms, const Params& start) const;
+  // Ballast state plus `terms`, fitted from `start`; simulated over the whole
+  // log, or in short horizons (CheckModel::shortHorizonSimulationError).
+  HeldOut score(const std::vector<std::size_t>& terms, const Params& start, bool short_horizons = false) const;
 
   // Sum over simulation channels of the held-out mean square relative to the
-  // ballast-only model's (floored by channelFloor), plus each prior's misfit
-  // relative to the ballast-only model's.
-  double cost(const HeldOut& h) const;
+  // ballast-only model's on the same horizons (floored by channelFloor), plus
+  // each prior's misfit relative to the ballast-only model's.
+  double cost(const HeldOut& h, bool short_horizons = false) const;
 
   const HeldOut& base() const { return base_; }
   const std::vector<Channel>& channels() const { return simCh_; }
-  double reference(std::size_t c) const { return simRef_[c]; }  // mean square the cost divides by
+  // Mean square the cost divides by.
+  double reference(std::size_t c, bool short_horizons = false) const { return references(short_horizons)[c]; }
 
  private:
   const FitSetup& s_;
   std::vector<Channel> simCh_;
   std::vector<int> halfOfRow_;
   std::vector<std::vector<std::uint32_t>> halfFit_;
+  const std::vector<double>& references(bool short_horizons) const;
+  static std::vector<double> meanSquares(const HeldOut& h, const std::vector<Channel>& channels);
+
+  Params baseParams_;
   HeldOut base_;
   std::vector<double> simRef_;
+  mutable std::vector<double> simRefShort_;  // scored when a transient term first needs it
 };
 
 }  // namespace auv::discrepancy::detail

@@ -93,7 +93,7 @@ const std::array<PhysicsTerm, kTermCount> kLibrary = {{
      "scale of the nominal coefficient", -0.9, 5.0, 0.3, kAuvFamily, "pitch moment -> pitch in manoeuvres",
      "fast pitch changes (depth steps, hover manoeuvres)", 1.0,
      [](double v, const TermInputs& in, Effects& e) { e.pitch_moment_nm += v * in.pitch_damping_basis; },
-     [](double v, SimAdjustment& a) { a.pitch_damping_scale += v; }},
+     [](double v, SimAdjustment& a) { a.pitch_damping_scale += v; }, true},
     {"vertical_current", "vertical water velocity (upwelling positive)", "m/s", -0.05, 0.05, 0.003,
      kAuvFamily | kGliderFamily, "depth rate over ground -> vertical velocity",
      "dives and climbs with different buoyancy-engine volumes", 1.0,

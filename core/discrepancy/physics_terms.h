@@ -89,6 +89,10 @@ struct PhysicsTerm {
   double display_scale = 1.0;
   void (*effect)(double value, const TermInputs& in, Effects& e) = nullptr;
   void (*simulate)(double value, SimAdjustment& a) = nullptr;
+  // Acts on the transients (a damping): the held-out test replays it in
+  // short horizons restarted from the log, where its effect shows; the
+  // others change what accumulates over the whole log.
+  bool transient = false;
 };
 
 inline constexpr std::size_t kTermCount = 9;

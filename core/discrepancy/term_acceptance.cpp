@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "discrepancy/residual_statistics.h"
 
@@ -43,6 +44,30 @@ RivalSet rivalsOf(std::size_t k, const TermSelection& ts, const std::vector<std:
   return out;
 }
 
+// One held-out comparison: the accepted model (`cur`, scored on the same
+// horizons) against it plus the trial term.
+struct HeldOutTrial {
+  HeldOut cur, ho;
+  bool short_horizons = false, pass = false, sim_better = false;
+  double before = 0.0, after = 0.0, eq_before = 0.0, eq_after = 0.0;
+};
+
+HeldOutTrial heldOutTrial(const FitSetup& s, const HeldOutScorer& scorer, HeldOut cur, const std::vector<std::size_t>& trial,
+                          const Params& start, bool short_horizons, const ModelCheckOptions& o) {
+  HeldOutTrial t;
+  t.short_horizons = short_horizons;
+  t.cur = std::move(cur);
+  t.ho = scorer.score(trial, start, short_horizons);
+  t.before = scorer.cost(t.cur, short_horizons);
+  t.after = scorer.cost(t.ho, short_horizons);
+  t.eq_before = heldOutEquationCost(s, t.cur);
+  t.eq_after = heldOutEquationCost(s, t.ho);
+  t.sim_better = t.after < t.before * (1.0 - o.min_sim_gain);
+  const bool eqBetter = t.after <= t.before * (1.0 + o.max_sim_loss) && t.eq_after < t.eq_before * (1.0 - o.min_eq_gain);
+  t.pass = t.sim_better || eqBetter;
+  return t;
+}
+
 }  // namespace
 
 TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, const HeldOutScorer& scorer,
@@ -60,7 +85,7 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     const std::size_t k = static_cast<std::size_t>(sel.selected[step] - s.nN);
     const std::size_t term = cand[k];
     CandidateReport& c = R.candidates[k];
-    char buf[160];
+    char buf[200];
     RivalSet rs;
     if (incl[k] < o.min_inclusion && incl[k] >= o.min_inclusion_with_rivals) rs = rivalsOf(k, ts, cand, accepted, o);
     if (incl[k] < o.min_inclusion && (rs.rivals.empty() || rs.group_inclusion < o.min_inclusion)) {
@@ -73,19 +98,27 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     trial.push_back(term);
     Params st = base;
     for (std::size_t a : accepted) st.terms[a] = R.accepted[a];
-    const HeldOut ho = scorer.score(trial, st);
-    const double before = scorer.cost(hoCur), after = scorer.cost(ho);
-    const double eqBefore = heldOutEquationCost(s, hoCur), eqAfter = heldOutEquationCost(s, ho);
-    const bool simBetter = after < before * (1.0 - o.min_sim_gain);
-    const bool eqBetter = after <= before * (1.0 + o.max_sim_loss) && eqAfter < eqBefore * (1.0 - o.min_eq_gain);
-    if (!simBetter && !eqBetter) {
+    // The whole-log replay first; a transient term (PhysicsTerm::transient)
+    // that fails it is judged again on short replays, against the accepted
+    // model on the same horizons.
+    HeldOutTrial t = heldOutTrial(s, scorer, hoCur, trial, st, false, o);
+    if (!t.pass && lib[term].transient) {
+      HeldOutTrial ts2 = heldOutTrial(s, scorer, scorer.score(accepted, st, true), trial, st, true, o);
+      if (ts2.pass) t = std::move(ts2);
+    }
+    const bool shortH = t.short_horizons;
+    const HeldOut& cur = t.cur;
+    const HeldOut& ho = t.ho;
+    if (!t.pass) {
       std::snprintf(buf, sizeof buf,
-                    "improves the equation error but not the held-out simulation error (cost %.4g -> %.4g; held-out "
+                    "improves the equation error but not the held-out simulation error%s (cost %.4g -> %.4g; held-out "
                     "equation error %.4g -> %.4g)",
-                    before, after, eqBefore, eqAfter);
+                    lib[term].transient ? ", whole or in short replays" : "", t.before, t.after, t.eq_before, t.eq_after);
       c.status = buf;
       continue;
     }
+    const bool simBetter = t.sim_better;
+    const double before = t.before, after = t.after, eqBefore = t.eq_before, eqAfter = t.eq_after;
     c.status = "accepted";
     MissingPhysics mp;
     mp.rivals = rs.rivals;
@@ -103,20 +136,20 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     // The channel the term helps most (relative to the base error).
     double bestGain = -std::numeric_limits<double>::infinity();
     for (std::size_t ch = 0; ch < SC; ++ch) {
-      if (!(hoCur.sim_n[ch] > 0)) continue;
-      const double g = (hoCur.sim_sse[ch] / hoCur.sim_n[ch] - ho.sim_sse[ch] / ho.sim_n[ch]) / scorer.reference(ch);
+      if (!(cur.sim_n[ch] > 0)) continue;
+      const double g = (cur.sim_sse[ch] / cur.sim_n[ch] - ho.sim_sse[ch] / ho.sim_n[ch]) / scorer.reference(ch, shortH);
       if (g > bestGain) {
         bestGain = g;
         mp.channel = simCh[ch];
-        mp.rms_before = rmsOf(hoCur.sim_sse[ch], hoCur.sim_n[ch]) * channelDisplayScale(simCh[ch]);
+        mp.rms_before = rmsOf(cur.sim_sse[ch], cur.sim_n[ch]) * channelDisplayScale(simCh[ch]);
         mp.rms_after = rmsOf(ho.sim_sse[ch], ho.sim_n[ch]) * channelDisplayScale(simCh[ch]);
       }
     }
-    for (std::size_t k2 = 0; k2 < hoCur.prior_z2.size(); ++k2)
-      if (s.priors[k2].measured && ho.prior_z2[k2] < hoCur.prior_z2[k2] && hoCur.prior_z2[k2] > 4.0)
+    for (std::size_t k2 = 0; k2 < cur.prior_z2.size(); ++k2)
+      if (s.priors[k2].measured && ho.prior_z2[k2] < cur.prior_z2[k2] && cur.prior_z2[k2] > 4.0)
         mp.evidence = "the flight data alone cannot separate it from " + R.nuisance_names[static_cast<std::size_t>(s.priors[k2].index)] +
                       "; the independent measurement of that (prior) does: without the term the fit is " +
-                      std::to_string(static_cast<int>(std::lround(std::sqrt(hoCur.prior_z2[k2])))) + " sigma from it";
+                      std::to_string(static_cast<int>(std::lround(std::sqrt(cur.prior_z2[k2])))) + " sigma from it";
     for (std::size_t l = 0; l < cand.size(); ++l)
       if (l != k && std::abs(ts.coll.correlation(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(l))) >= o.collinear_threshold)
         mp.confused_with.emplace_back(lib[cand[l]].id);
@@ -127,7 +160,7 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     // Provisional value for the next step's start.
     const Fit f = fit(s, fitRows, accepted, st);
     R.accepted = f.params.terms;
-    hoCur = ho;
+    hoCur = shortH ? scorer.score(accepted, st) : ho;  // the next term is judged on the whole log again
   }
   return out;
 }

@@ -104,6 +104,8 @@ TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAut
 
   TermReplayTrace tr;
   for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps}) v->assign(times.size(), kNaN);
+  tr.since_start_s.resize(times.size());
+  for (std::size_t i = 0; i < times.size(); ++i) tr.since_start_s[i] = times[i] - t0;
   std::size_t next = 0;
   for (long k = 0; k <= n_steps; ++k) {
     const auto i = static_cast<std::size_t>(k);
@@ -169,7 +171,8 @@ MissionLog sliceRows(const MissionLog& log, std::size_t r0, std::size_t r1) {
 }  // namespace
 
 // A logger drop-out longer than 20 row spacings (at least 30 s) ends a span
-// and the replay restarts from the first row after it, as sim::replay does:
+// (and, with restart_every_s, so does that much flight) and the replay
+// restarts from the first row after it, as sim::replay does:
 // steps, memory and time follow the rows, not a gap of days. Requested times
 // inside a gap stay NaN.
 TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopilotConfig& apcfg,
@@ -184,14 +187,15 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
   std::vector<std::pair<std::size_t, std::size_t>> spans;
   for (std::size_t r0 = 0; r0 < T.size();) {
     std::size_t r1 = r0 + 1;
-    while (r1 < T.size() && T[r1] - T[r1 - 1] <= gap_s) ++r1;
+    while (r1 < T.size() && T[r1] - T[r1 - 1] <= gap_s && !(opt.restart_every_s > 0.0 && T[r1] - T[r0] >= opt.restart_every_s)) ++r1;
     spans.push_back({r0, r1});
     r0 = r1;
   }
   if (spans.size() == 1) return replayOneSpan(base, apcfg, water, log, a, times, opt);
 
   TermReplayTrace tr;
-  for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps}) v->assign(times.size(), kNaN);
+  for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps, &tr.since_start_s})
+    v->assign(times.size(), kNaN);
   for (const auto& [r0, r1] : spans) {
     if (r1 - r0 < 2) continue;  // a lone row between gaps: nothing to fly
     std::vector<double> sub;
@@ -210,6 +214,7 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
       tr.roll_rad[at[j]] = part.roll_rad[j];
       tr.speed_mps[at[j]] = part.speed_mps[j];
       tr.vertical_velocity_mps[at[j]] = part.vertical_velocity_mps[j];
+      tr.since_start_s[at[j]] = part.since_start_s[j];
     }
   }
   return tr;

@@ -35,11 +35,16 @@ struct TermReplayOptions {
   sim::VehicleLoading loading;
   bool preload_hover_integrator = true;  // as a simulated mission starts (sim::simulate)
   double mass_reference_time_s = 0.0;    // the drifting mass equals the loading's at this time
+  // > 0: restart from the logged state this often (a short-horizon replay:
+  // the water's unlogged motion and the autopilot's reaction to sensor noise
+  // do not accumulate into phase errors that no model can reproduce).
+  double restart_every_s = 0.0;
 };
 
 // Simulated sensor readings at `times` (ascending, within the log).
 struct TermReplayTrace {
   std::vector<double> depth_m, pitch_rad, roll_rad, speed_mps, vertical_velocity_mps;  // vv up positive, over ground
+  std::vector<double> since_start_s;  // time since the replay (re)started from the log; NaN where not flown
 };
 
 TermReplayTrace termReplay(const sim::VehicleModel& model, const sim::DepthAutopilotConfig& autopilot,

@@ -43,5 +43,19 @@ TEST(DrawnTruths, ConcealedEffectsAreMostlyTheTopTerm) {
   EXPECT_GE(top1, 2);
 }
 
+TEST(DrawnTruths, ADampingIsJudgedOnShortReplays) {
+  // Truth 700 (M_q' x 0.79, M_|q|q x 2): replayed over the whole log the
+  // true vehicle itself scored worse than the fitted base without the term
+  // (depth 0.072 against 0.058 m^2), so the term was refused. Replayed in
+  // 90 s horizons restarted from the log, the damping shows.
+  const DrawnCase c = drawnCases()[6];
+  ASSERT_EQ(c.expected, "quadratic_pitch_damping");
+  const DrawnOutcome o = runDrawnCase(nominal(), c, {700}, true);
+  printDrawnRow(o);
+  EXPECT_EQ(o.top1, 1);
+  EXPECT_EQ(o.within30, 1);
+  EXPECT_EQ(o.false_terms, 0);
+}
+
 }  // namespace
 }  // namespace auv::discrepancy::test
