@@ -554,16 +554,19 @@ void AuvCheckModel::replayError(const Params& p, double restart_every_s, double 
   }
 }
 
-void AuvCheckModel::simulationError(const Params& p, std::vector<double>& out) const { replayError(p, 0.0, opt_.settle_s, out); }
+void AuvCheckModel::simulationError(const Params& p, std::vector<double>& out) const {
+  replayError(p, 0.0, opt_.settle_s, out);
+}
 
 // Measured on drawn truths (model_check_truths_bench): a whole-log replay
 // driven by the logged depth commands scored the true vehicle (quadratic
 // pitch damping included) worse than the fitted base without it (depth 0.072
 // against 0.058 m^2 on truth 700): the replayed autopilot does not meet the
 // noise the real one steered on, and an oscillation flown out of phase costs
-// twice. Short horizons keep a damping's effect and drop the drift; slow
-// terms (mass drift, currents) stay on the whole log, where short horizons
-// lost them (mass drift 4 -> 3 of 6, a vertical current on a control).
+// twice. Short horizons keep a damping's effect and drop the drift, so a
+// transient term the whole-log test refuses is judged again here; slow terms
+// (mass drift, currents) stay on the whole log, where short horizons lost
+// them (mass drift 4 -> 3 of 6, a vertical current on a control).
 void AuvCheckModel::shortHorizonSimulationError(const Params& p, std::vector<double>& out) const {
   replayError(p, opt_.short_horizon_s, opt_.short_settle_s, out);
 }

@@ -97,8 +97,8 @@ class CheckModel {
   virtual std::vector<Channel> simulationChannels() const = 0;
   virtual void simulationError(const Params& p, std::vector<double>& out) const = 0;
   // The same error from replays in short horizons, each restarted from the
-  // logged state (same layout): what the held-out test scores a transient
-  // term on (PhysicsTerm::transient). Default: the whole-log replay.
+  // logged state (same layout): the held-out test's second chance for a
+  // transient term (PhysicsTerm::transient). Default: the whole-log replay.
   virtual void shortHorizonSimulationError(const Params& p, std::vector<double>& out) const { simulationError(p, out); }
 
   // The reported net buoyancy [kg] and CG offset [m] for a nuisance vector

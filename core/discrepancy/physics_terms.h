@@ -89,9 +89,10 @@ struct PhysicsTerm {
   double display_scale = 1.0;
   void (*effect)(double value, const TermInputs& in, Effects& e) = nullptr;
   void (*simulate)(double value, SimAdjustment& a) = nullptr;
-  // Acts on the transients (a damping): the held-out test replays it in
-  // short horizons restarted from the log, where its effect shows; the
-  // others change what accumulates over the whole log.
+  // Acts on the transients (a damping): when the whole-log held-out replay
+  // refuses it, the test is repeated on short horizons restarted from the
+  // log, where its effect shows; the others change what accumulates over
+  // the whole log and are judged there only.
   bool transient = false;
 };
 

@@ -187,7 +187,8 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
   std::vector<std::pair<std::size_t, std::size_t>> spans;
   for (std::size_t r0 = 0; r0 < T.size();) {
     std::size_t r1 = r0 + 1;
-    while (r1 < T.size() && T[r1] - T[r1 - 1] <= gap_s && !(opt.restart_every_s > 0.0 && T[r1] - T[r0] >= opt.restart_every_s)) ++r1;
+    const auto horizonEnds = [&](std::size_t r) { return opt.restart_every_s > 0.0 && T[r] - T[r0] >= opt.restart_every_s; };
+    while (r1 < T.size() && T[r1] - T[r1 - 1] <= gap_s && !horizonEnds(r1)) ++r1;
     spans.push_back({r0, r1});
     r0 = r1;
   }
