@@ -87,6 +87,34 @@ double torqueShape(const SteadySegmentMeans& g, const AuvTrimContext& ctx) {
   return rpm * rpm * f;
 }
 
+// Segments at one propeller speed: within 2 % of each other (the logged rpm
+// of one demand wanders by a few tenths of a per cent).
+bool sameRpm(double a, double b) { return std::abs(a - b) <= 0.02 * std::max(std::abs(a), std::abs(b)); }
+
+// The cruise propeller speed: the highest rpm the vehicle flew for at least
+// kCruiseMinSteady_s of steady segments. A survey flies each speed for
+// lines of 10 min and more; a calibration manoeuvre's 5-min leg at a faster
+// rpm is not the speed the next mission cruises at, and levelling the
+// vehicle there leaves the torque difference as roll at the real cruise
+// (identification truths 2102/2123: 1.4-1.7 deg after the second move).
+// Without such a speed, the rpm flown longest.
+constexpr double kCruiseMinSteady_s = 600.0;
+double cruiseRpm(const std::vector<const SteadySegmentMeans*>& s) {
+  std::vector<std::pair<double, double>> groups;  // rpm, steady seconds
+  for (const auto* g : s) {
+    const double rpm = g->prop_rpm.mean, dt = g->end_s - g->start_s;
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& q) { return sameRpm(q.first, rpm); });
+    if (it == groups.end()) groups.push_back({rpm, dt});
+    else it->first = std::max(it->first, rpm), it->second += dt;
+  }
+  double best = 0.0, longest = -1.0, longest_rpm = 0.0;
+  for (const auto& [rpm, dt] : groups) {
+    if (dt >= kCruiseMinSteady_s) best = std::max(best, rpm);
+    if (dt > longest) longest = dt, longest_rpm = rpm;
+  }
+  return best > 0.0 ? best : longest_rpm;
+}
+
 void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext& ctx, AuvTrimEstimate& out) {
   // Static roll (propeller torque removed where the log allows).
   std::vector<const SteadySegmentMeans*> s;
@@ -143,14 +171,13 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     q.profile_value = ctx.profile_torque_nm_per_100rpm2;
     q.identified = q.sigma < 0.5 * std::max(q.prior_sigma, std::abs(q.value));
     out.calibration.push_back(q);
-    // Roll at cruise measured directly on the segments at the highest rpm
+    // Roll at cruise measured directly on the segments at the cruise rpm
     // (thesis §5.3.3 reads roll where the propeller turns at 160 rpm): no
     // torque law between, so its error does not reach the plan.
-    double rpm_max = 0.0;
-    for (const auto* g : s) rpm_max = std::max(rpm_max, g->prop_rpm.mean);
+    const double rpm_cruise = cruiseRpm(s);
     double sw = 0.0, swx = 0.0, su = 0.0, swu = 0.0;
     for (const auto* g : s) {
-      if (g->prop_rpm.mean < 0.98 * rpm_max) continue;
+      if (!sameRpm(g->prop_rpm.mean, rpm_cruise)) continue;
       const double w = 1.0 / (rollSe(g) * rollSe(g));
       sw += w;
       swx += w * g->roll_deg.mean;
@@ -158,7 +185,7 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     }
     if (su > 0.0) out.cruise_speed_mps = swu / su;
     out.cruise_known = true;
-    out.cruise_rpm = rpm_max;
+    out.cruise_rpm = rpm_cruise;
     out.cruise_roll_deg = swx / sw;
     out.cruise_roll_sigma_deg = std::sqrt(1.0 / sw);
     out.y_basis = "static (propeller torque fitted over " + std::to_string(s.size()) + " segments at different rpm)";

@@ -83,7 +83,7 @@ struct AuvTrimEstimate {
   std::string y_basis;  // "static", "static (propeller torque fitted)", "cruise_equivalent", "static_assumed"
   double roll_static_deg = 0.0, roll_static_sigma_deg = 0.0;
   bool roll_static_known = false;
-  // Roll at the cruise propeller speed (the highest steady rpm), the
+  // Roll at the cruise propeller speed (the highest rpm flown 10 min or more),
   // thesis's roll criterion (§5.3.3: zero at 160 rpm), and the CG y that
   // would give that roll at rest: zeroing it levels the vehicle in cruise,
   // propeller torque included. From the torque fit where there is one, so

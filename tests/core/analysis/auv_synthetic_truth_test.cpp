@@ -7,6 +7,7 @@
 #include "vehicle/profile_loader.h"
 
 #include "analysis/mission_analysis.h"
+#include "common/units.h"
 #include "auv_truth.h"
 #include "vehicle/vehicle_catalog.h"
 
@@ -156,6 +157,37 @@ TEST(AuvSyntheticTruth, PropellerTorqueIsSeparatedFromCgY) {
   EXPECT_NEAR(r.cg_y_mm.value, 3.0, 1.0);
   // The mean roll at cruise is far from the static one.
   EXPECT_GT(std::abs(r.roll_deg.mean - std::atan(3.0 / 60.0) * 180 / 3.141592653589793), 1.0);
+}
+
+// A calibration manoeuvre's short leg at a faster rpm is not the cruise:
+// the plan levels the vehicle at the speed the survey flies (a 5-min leg
+// at 190 rpm above a 150-rpm survey left 1.4-1.7 deg of roll after the
+// second move on the identification truths).
+TEST(AuvSyntheticTruth, CruiseIsTheFastestSpeedFlownTenMinutesNotAShortFasterLeg) {
+  const VehicleProfile v = delphin2();
+  AuvTruth t;
+  t.prop_torque_nm_per_rps2 = 0.02;
+  t.legs = {{10, 1.0, 1200}, {20, 1.3, 1200}, {15, 1.6, 300}};  // rpm = 600 x speed
+  const AnalysisReport r = analyzeMission(makeAuvLog(v, t), v, optionsFor(v, t));
+  ASSERT_TRUE(r.cruise_roll_deg.known);
+  EXPECT_NEAR(r.cruise_rpm, 780.0, 5.0);
+  // The truth's steady roll at 1.3 m/s (13 rev/s), independent of the
+  // analysis: the torque rolls the 1.6 m/s leg 50 % further.
+  const double volume = (t.mass_kg + t.net_buoyancy_kg) / meanLegDensity(t);
+  auto rollAt = [&](double speed, double depth) {
+    const double rho = legDensity(t, depth), n = 10.0 * speed;
+    return units::radToDeg(solveSteady(v, t.mass_kg * units::g0, rho * volume * units::g0, t.cg_m, speed, rho,
+                                       t.prop_torque_nm_per_rps2 * n * n)
+                               .roll_rad);
+  };
+  const double cruise = rollAt(1.3, 20), fast = rollAt(1.6, 15);
+  ASSERT_GT(std::abs(fast - cruise), 0.5);
+  EXPECT_NEAR(r.cruise_roll_deg.value, cruise, 3 * r.cruise_roll_deg.sigma + 0.05);
+  // Every speed flown long enough: the fastest is the cruise, as before.
+  t.legs.back().duration_s = 900;
+  const AnalysisReport r3 = analyzeMission(makeAuvLog(v, t), v, optionsFor(v, t));
+  EXPECT_NEAR(r3.cruise_rpm, 960.0, 5.0);
+  EXPECT_NEAR(r3.cruise_roll_deg.value, fast, 3 * r3.cruise_roll_deg.sigma + 0.05);
 }
 
 TEST(AuvSyntheticTruth, ErrorsAndWaterWithIntervals) {
