@@ -4,7 +4,8 @@
 // missions in stratified water with internal waves, noise and drop-outs, the
 // analysis given only the nominal profile: median and 90th percentile
 // |error| of net buoyancy, CG x, CG y, 2-sigma coverage, the closed loop
-// after one move, and the analysis time of a 3 h 1 Hz and a 24 h 10 Hz log.
+// after one and two moves, the second mission's joint (history) estimate
+// with its coverage, and the analysis time of a 3 h 1 Hz and a 24 h 10 Hz log.
 //   identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S]
 // (--log-interval: row interval of the flown logs, default 1 s; --transients:
 // the analysis also fits the transients, auv_transient_fit.h; --fly-manoeuvre:
@@ -107,8 +108,8 @@ int main(int argc, char** argv) {
   h.log_interval_s = log_interval_s;
   h.use_transients = transients;
   h.fly_manoeuvre = fly_manoeuvre;
-  std::vector<double> en, ex, ey;
-  int known = 0, cov_n = 0, cov_x = 0, cov_y = 0, y_known = 0;
+  std::vector<double> en, ex, ey, en2, ex2;
+  int known = 0, cov_n = 0, cov_x = 0, cov_y = 0, y_known = 0, cov_n2 = 0, cov_x2 = 0;
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;
   int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0, twice = 0, asked = 0, flown = 0;
   std::map<std::string, int> identified;
@@ -158,6 +159,12 @@ int main(int argc, char** argv) {
       if (r.log_rpms.size() >= 3) ++n3, spec3 += r.one.spec, spec23 += r.two.spec;
       asked += r.manoeuvre_asked, flown += r.manoeuvre_flown;
     }
+    if (r.twice && r.net2_sigma_kg > 0.0) {
+      en2.push_back(std::abs(r.net2_err_kg));
+      ex2.push_back(std::abs(r.x2_err_mm));
+      cov_n2 += std::abs(r.net2_err_kg) <= 2 * r.net2_sigma_kg;
+      cov_x2 += std::abs(r.x2_err_mm) <= 2 * r.x2_sigma_mm;
+    }
   }
   std::printf("identification bench: %d truths (seed %llu), estimates for %d\n", truths,
               static_cast<unsigned long long>(seed), known);
@@ -168,6 +175,11 @@ int main(int argc, char** argv) {
   std::printf("  identified by the log (of %d):", truths);
   for (const auto& [id, n] : identified) std::printf(" %s %d,", id.c_str(), n);
   std::printf("\n");
+  if (loop)
+    std::printf("  second mission, joint with the first (history): net %.3f / %.3f kg (coverage %d of %zu), "
+                "CG x %.2f / %.2f mm (coverage %d of %zu), median / p90\n",
+                quantile(en2, 0.5), quantile(en2, 0.9), cov_n2, en2.size(), quantile(ex2, 0.5), quantile(ex2, 0.9),
+                cov_x2, ex2.size());
   if (loop)
     std::printf("  one move: spec %d of %d (logs with >= 3 steady speeds: %d of %d); net %d, pitch %d, roll %d; never negative %d of %d\n",
                 spec, looped, spec3, n3, net_ok, pitch_ok, roll_ok, safe, looped);
