@@ -94,7 +94,11 @@ int main(int argc, char** argv) {
       return 0;
     }
     else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: logs (first, -2 second) and report of one truth
-      const identification::Harness h;
+      // The flags given before it apply (--fly-manoeuvre, --log-interval, --transients).
+      identification::Harness h;
+      h.log_interval_s = log_interval_s;
+      h.use_transients = transients;
+      h.fly_manoeuvre = fly_manoeuvre;
       const auto r = h.run(std::strtoull(argv[i + 1], nullptr, 10), true, argv[i + 2]);
       std::printf("%s\n", r.truth.describe().c_str());
       return 0;
