@@ -48,14 +48,21 @@ WaterColumn loadWaterFile(const std::string& file) {
 
 namespace {
 
+bool readBool(const JsonReader& r, const std::string& key) {
+  const nlohmann::json& v = r.node().at(key);
+  if (!v.is_boolean()) r.fail(key, "expected true or false", "write true or false without quotes");
+  return v.get<bool>();
+}
+
 DepthLeg readLeg(const JsonReader& l) {
   const std::string type = l.text("type");
-  l.refuseUnknownKeys({"type", "duration_s", "depth_m", "pitch_deg", "heading_deg", "prop_demand"}, kPlanDoc);
+  l.refuseUnknownKeys({"type", "duration_s", "depth_m", "pitch_deg", "heading_deg", "prop_demand", "ramp"}, kPlanDoc);
   DepthLeg leg;
   leg.duration_s = l.numberIn("duration_s", 1e-3, 1e7);
   leg.depth_m = l.numberIn("depth_m", 0.0, 11000.0);
   leg.pitch_rad = units::degToRad(l.numberIn("pitch_deg", -45.0, 45.0, 0.0));
   if (l.has("heading_deg")) leg.heading_rad = units::degToRad(l.numberIn("heading_deg", 0.0, 360.0));
+  if (l.has("ramp")) leg.ramp = readBool(l, "ramp");
   if (type == "hover") {
     if (l.has("prop_demand")) l.fail("prop_demand", "a hover leg has no propeller demand", "use type \"depth\"");
     leg.prop_demand = 0.0;
@@ -79,12 +86,6 @@ YoLeg readYoLeg(const JsonReader& l) {
   if (l.has("dive_pitch_deg")) leg.dive_pitch_rad = units::degToRad(l.numberIn("dive_pitch_deg", -80.0, -1.0));
   if (l.has("climb_pitch_deg")) leg.climb_pitch_rad = units::degToRad(l.numberIn("climb_pitch_deg", 1.0, 80.0));
   return leg;
-}
-
-bool readBool(const JsonReader& r, const std::string& key) {
-  const nlohmann::json& v = r.node().at(key);
-  if (!v.is_boolean()) r.fail(key, "expected true or false", "write true or false without quotes");
-  return v.get<bool>();
 }
 
 }  // namespace

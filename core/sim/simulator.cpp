@@ -42,6 +42,16 @@ void validate(const Scenario& sc, const SimOptions& opt) {
   }
 }
 
+// The depth command at time t inside leg i (which ends at leg_end_s): the
+// leg's depth, or on a ramp leg the straight line from the depth before it.
+double legDepthCommand(const Scenario& sc, std::size_t i, double leg_end_s, double t) {
+  const DepthLeg& L = sc.legs[i];
+  if (!L.ramp) return L.depth_m;
+  const double from = i == 0 ? sc.initial_depth_m : sc.legs[i - 1].depth_m;
+  const double f = std::clamp(1.0 - (leg_end_s - t) / L.duration_s, 0.0, 1.0);
+  return from + f * (L.depth_m - from);
+}
+
 }  // namespace
 
 SimTrace simulate(const VehicleModel& model, const DepthAutopilotConfig& apcfg, const WaterColumn& water,
@@ -96,6 +106,7 @@ SimTrace simulate(const VehicleModel& model, const DepthAutopilotConfig& apcfg, 
     }
     while (leg + 1 < sc.legs.size() && t >= leg_end[leg] - 1e-9) ++leg;
     const DepthLeg& L = sc.legs[leg];
+    const double depth_cmd_m = legDepthCommand(sc, leg, leg_end[leg], t);
 
     if (k > 0) eng.sampleWater();
     const double W = weight0 - delta_b;
@@ -105,11 +116,11 @@ SimTrace simulate(const VehicleModel& model, const DepthAutopilotConfig& apcfg, 
     Measurement meas;
     if (control_now || trace_now) meas = eng.measure(noise, opt.noise);
     if (control_now) {
-      demand = ap.update(meas, {L.depth_m, L.pitch_rad, L.prop_demand}, eng.water().density_kgm3);
+      demand = ap.update(meas, {depth_cmd_m, L.pitch_rad, L.prop_demand}, eng.water().density_kgm3);
       rudder_demand = hp.update(leg_heading[leg], eng.headingMeasured(noise, opt.noise), eng.yaw().r_radps);
     }
     if (trace_now) {
-      const SampleExtras x{L.depth_m, ap.outputs().pitch_cmd_rad,
+      const SampleExtras x{depth_cmd_m, ap.outputs().pitch_cmd_rad,
                            apcfg.heading.enabled ? leg_heading[leg] : std::numeric_limits<double>::quiet_NaN(),
                            ap.outputs().hover_force_n};
       eng.record(tr, t, meas, x, W, noise, opt.noise);

@@ -28,6 +28,13 @@ struct DepthLeg {
   // Heading set point (0..2 pi); NaN keeps the previous leg's (or the
   // initial) heading. Used only by a vehicle with heading hold.
   double heading_rad = std::numeric_limits<double>::quiet_NaN();
+  // The depth command moves linearly from the previous leg's depth (the
+  // initial depth for the first leg) to depth_m over the leg, as a vehicle's
+  // guidance ramps a depth change; false = a step at the leg's start.
+  // A ramp built from 1-s step legs instead steps the command on every
+  // sample of a 1 Hz log, and each sample catches the autopilot's kick at
+  // the same phase: the logged elevator means of the glide are biased.
+  bool ramp = false;
 };
 
 // A sudden change of net buoyancy, e.g. a weight dropped on or taken off

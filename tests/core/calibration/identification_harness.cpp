@@ -98,7 +98,9 @@ double cruisePitchDeg(const analysis::AnalysisReport& rp, double survey_top_rpm)
 
 // The calibration manoeuvre a plan asked for, appended to the mission as
 // the vehicle's own legs: level legs at the operating depth, and depth
-// changes as a depth command ramped every second at the asked rate.
+// changes as a depth command ramped at the asked rate (one ramp leg: a
+// staircase of 1-s legs would step the command on every sample of the 1 Hz
+// log, and the samples would catch the autopilot's kick at one phase).
 bool appendManoeuvre(const nlohmann::json& manoeuvre, double op_depth_m, sim::SurveyMission& m) {
   if (!manoeuvre.contains("flight") || !manoeuvre["flight"].is_array()) return false;
   double depth = op_depth_m;
@@ -113,12 +115,11 @@ bool appendManoeuvre(const nlohmann::json& manoeuvre, double op_depth_m, sim::Su
       leg.depth_m = depth;
       m.scenario.legs.push_back(leg);
     } else {
-      for (double t = 1.0; t <= seconds + 1e-9; t += 1.0) {
-        leg.duration_s = 1.0;
-        leg.depth_m = depth + rate * t;
-        m.scenario.legs.push_back(leg);
-      }
       depth += rate * seconds;
+      leg.duration_s = seconds;
+      leg.depth_m = depth;
+      leg.ramp = true;
+      m.scenario.legs.push_back(leg);
     }
     any = true;
   }

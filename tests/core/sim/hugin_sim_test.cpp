@@ -70,5 +70,64 @@ TEST(HuginSim, FlightAutopilotChangesDepthWithoutOvershootingFar) {
   EXPECT_GT(tr.net_buoyancy_n.back(), tr.net_buoyancy_n.front() + 3.0);
 }
 
+// Mean of the logged elevator over [t0, t1) of a trace.
+double elevatorMeanDeg(const SimTrace& tr, double t0, double t1) {
+  double s = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < tr.size(); ++i)
+    if (tr.time_s[i] >= t0 && tr.time_s[i] < t1) s += tr.elevator_rad[i], ++n;
+  return units::radToDeg(s / n);
+}
+
+// A 30 m descent at 0.25 m/s between two level legs at 160 rpm, the depth
+// command ramped by one leg, or (staircase) by 1-s legs.
+Scenario descent(bool staircase) {
+  Scenario sc;
+  sc.net_buoyancy_n = 20.0;
+  sc.initial_depth_m = 50.0;
+  sc.initial_speed_mps = 2.0;
+  sc.legs = {{200.0, 50.0, 160.0}};
+  if (staircase) {
+    for (int k = 1; k <= 120; ++k) sc.legs.push_back({1.0, 50.0 + 0.25 * k, 160.0});
+  } else {
+    DepthLeg ramp{120.0, 80.0, 160.0};
+    ramp.ramp = true;
+    sc.legs.push_back(ramp);
+  }
+  sc.legs.push_back({200.0, 80.0, 160.0});
+  return sc;
+}
+
+TEST(HuginSim, RampLegMovesTheDepthCommandInAStraightLineAndTheVehicleFollows) {
+  const Hugin h;
+  SimOptions o;
+  o.trace_interval_s = 1.0;
+  const SimTrace tr = simulate(h.model, h.autopilot, sea(), descent(false), o);
+  auto at = [&](double t) { return static_cast<std::size_t>(std::lround(t)); };
+  EXPECT_DOUBLE_EQ(tr.depth_cmd_m[at(199)], 50.0);
+  EXPECT_NEAR(tr.depth_cmd_m[at(230)], 57.5, 1e-9);  // a quarter of the way
+  EXPECT_NEAR(tr.depth_cmd_m[at(290)], 72.5, 1e-9);
+  EXPECT_DOUBLE_EQ(tr.depth_cmd_m[at(330)], 80.0);
+  // Settled on the ramp: the vehicle descends at the command's rate.
+  EXPECT_NEAR((tr.depth_m[at(310)] - tr.depth_m[at(270)]) / 40.0, 0.25, 0.005);
+}
+
+TEST(HuginSim, RampedDescentLoggedAtOneHertzKeepsTheElevatorMeanAStaircaseDoesNot) {
+  // The mean of the 1 Hz log over the settled descent against the 20 Hz
+  // mean of the same flight (the elevator the vehicle really held).
+  const Hugin h;
+  SimOptions fast, slow;
+  fast.trace_interval_s = 0.05;
+  slow.trace_interval_s = 1.0;
+  for (bool staircase : {false, true}) {
+    const double e_fast = elevatorMeanDeg(simulate(h.model, h.autopilot, sea(), descent(staircase), fast), 260, 320);
+    const double e_slow = elevatorMeanDeg(simulate(h.model, h.autopilot, sea(), descent(staircase), slow), 260, 320);
+    if (staircase)  // each 1 Hz sample lands on a command step: one phase of the kick
+      EXPECT_GT(std::abs(e_slow - e_fast), 0.1) << e_slow << " vs " << e_fast;
+    else
+      EXPECT_NEAR(e_slow, e_fast, 0.02);
+  }
+}
+
 }  // namespace
 }  // namespace auv::sim

@@ -99,6 +99,21 @@ TEST(MissionPlan, ErrorsNameTheField) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.field(), "options.anti_windup");
   }
+  const std::string ramp = R"({"format": "auvballast-mission-plan", "version": 1, "vehicle": "x",
+    "water": {"density_kgm3": 1000}, "legs": [{"type": "depth", "depth_m": 5, "prop_demand": 20,
+    "duration_s": 10, "ramp": true}, {"type": "hover", "depth_m": 1, "duration_s": 10, "ramp": 1}]})";
+  const std::string ramp_ok = R"({"format": "auvballast-mission-plan", "version": 1, "vehicle": "x",
+    "water": {"density_kgm3": 1000}, "legs": [{"type": "depth", "depth_m": 5, "prop_demand": 20,
+    "duration_s": 10, "ramp": true}, {"type": "hover", "depth_m": 1, "duration_s": 10}]})";
+  const MissionPlan with_ramp = parseMissionPlan(JsonReader::parseText(ramp_ok, "r.json"), "r.json");
+  EXPECT_TRUE(with_ramp.scenario.legs[0].ramp);
+  EXPECT_FALSE(with_ramp.scenario.legs[1].ramp);
+  try {
+    (void)parseMissionPlan(JsonReader::parseText(ramp, "r.json"), "r.json");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "legs[1].ramp");  // legs[0]'s true was read
+  }
 }
 
 TEST(MissionPlan, VehicleWithoutSimParametersIsReported) {
