@@ -115,7 +115,11 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     out.calibration.push_back(q);
     // Roll at cruise measured directly on the segments at the cruise rpm
     // (thesis §5.3.3 reads roll where the propeller turns at 160 rpm): no
-    // torque law between, so its error does not reach the plan.
+    // torque law between, so its error does not reach the plan. Known limit:
+    // the torque is the one at the logged speed; a vehicle that flew pitched
+    // and flies level after the move goes faster at the same rpm, and the
+    // lower torque rolls it (identification truth 2139: 1.93 -> 2.14 m/s,
+    // -0.93 deg by the torque law, -1.0 deg flown).
     const double rpm_cruise = cruiseRpm(s);
     double sw = 0.0, swx = 0.0, su = 0.0, swu = 0.0;
     for (const auto* g : s) {
