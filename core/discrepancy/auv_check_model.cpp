@@ -538,14 +538,14 @@ void AuvCheckModel::replayError(const Params& p, double restart_every_s, double 
   o.loading = loading(p);
   o.mass_reference_time_s = t_ref_;
   o.restart_every_s = restart_every_s;
+  o.surface_depth_m = opt_.min_depth_m;  // the rows the equation error leaves out as surface rows
   const TermReplayTrace tr = termReplay(calibratedModel(p), autopilot_, water_, log_, simAdjustment(total(p)), table_.t, o);
   const std::size_t N = rowGrid_.size();
   out.assign(5 * N, kNaN);
-  // A whole-log replay settles once, from the log's start; a short-horizon
-  // one after every restart.
-  const double t0 = log_.time.front() + settle_s;
+  // The replay settles after every (re)start: the log's start, a drop-out,
+  // a surface interval and, for short horizons, every restart.
   for (std::size_t i = 0; i < N; ++i) {
-    if (restart_every_s > 0.0 ? !(tr.since_start_s[i] >= settle_s) : table_.t[i] < t0) continue;
+    if (!(tr.since_start_s[i] >= settle_s)) continue;
     out[5 * i + 0] = obs_depth_[i] - tr.depth_m[i];
     out[5 * i + 1] = obs_pitch_[i] - tr.pitch_rad[i];
     out[5 * i + 2] = obs_roll_[i] - tr.roll_rad[i];

@@ -7,6 +7,7 @@
 #include "common/input_error.h"
 #include "common/units.h"
 #include "missionlog/resample.h"
+#include "sim/replay_start.h"
 #include "sim/step_engine.h"
 
 namespace auv::discrepancy {
@@ -55,7 +56,7 @@ namespace {
 
 TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAutopilotConfig& apcfg,
                               const sim::WaterColumn& water, const MissionLog& log, const SimAdjustment& a,
-                              std::span<const double> times, const TermReplayOptions& opt) {
+                              std::span<const double> times, const TermReplayOptions& opt, bool restart) {
   const sim::VehicleModel model = adjustedModel(base, a);
   const sim::ReplayDrive drive = sim::resolveReplayDrive(model, log, opt.drive);
   const double dt = opt.dt_s;
@@ -79,17 +80,12 @@ TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAut
   std::vector<long> stepOf(times.size());
   for (std::size_t i = 0; i < times.size(); ++i) stepOf[i] = std::clamp(std::lround((times[i] - t0) / dt), 0L, n_steps);
 
-  const auto at0 = [&](const char* name, double fallback) {
-    const std::vector<double> v = onGrid(log, name, {t0}, Interpolation::kLinear);
-    return v.empty() || std::isnan(v.front()) ? fallback : v.front();
-  };
-  sim::InitialState init;
-  init.depth_m = at0("depth", 0.0) - a.depth_offset_m;
-  init.pitch_rad = units::degToRad(at0("pitch", 0.0)) - a.pitch_bias_rad;
-  init.roll_rad = units::degToRad(at0("roll", 0.0)) - a.roll_bias_rad;
-  init.heading_rad = units::degToRad(at0("heading", 0.0));
-  init.speed_mps = at0("speed", 0.0);
-  init.prop_rps = rpm.front() / 60.0;
+  sim::InitialState init = sim::replayStartState(log, t0, model, restart);
+  init.depth_m -= a.depth_offset_m;
+  init.pitch_rad -= a.pitch_bias_rad;
+  init.roll_rad -= a.roll_bias_rad;
+  // The log's depth rate is over ground; the vehicle moves through the water.
+  if (init.depth_rate_mps) *init.depth_rate_mps += a.vertical_current_mps;
 
   sim::StepEngine eng(model, water, dt, false);
   eng.start(init, opt.loading);
@@ -168,13 +164,34 @@ MissionLog sliceRows(const MissionLog& log, std::size_t r0, std::size_t r1) {
   return out;
 }
 
+// Rows of a surface interval (options.surface_depth_m): shallower than the
+// limit for at least `min_s`.
+std::vector<bool> surfaceRows(const MissionLog& log, double limit_m, double min_s) {
+  std::vector<bool> out(log.rowCount(), false);
+  const LogChannel* depth = log.find("depth");
+  if (depth == nullptr || !std::isfinite(limit_m)) return out;
+  const std::vector<double>& z = depth->values;
+  for (std::size_t r0 = 0; r0 < z.size();) {
+    if (!(z[r0] < limit_m)) {
+      ++r0;
+      continue;
+    }
+    std::size_t r1 = r0;
+    while (r1 < z.size() && z[r1] < limit_m) ++r1;
+    if (log.time[r1 - 1] - log.time[r0] >= min_s) std::fill(out.begin() + static_cast<long>(r0), out.begin() + static_cast<long>(r1), true);
+    r0 = r1;
+  }
+  return out;
+}
+
 }  // namespace
 
 // A logger drop-out longer than 20 row spacings (at least 30 s) ends a span
 // (and, with restart_every_s, so does that much flight) and the replay
 // restarts from the first row after it, as sim::replay does:
-// steps, memory and time follow the rows, not a gap of days. Requested times
-// inside a gap stay NaN.
+// steps, memory and time follow the rows, not a gap of days. A surface
+// interval as long ends a span the same way. Requested times inside a gap
+// or at the surface stay NaN.
 TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopilotConfig& apcfg,
                            const sim::WaterColumn& water, const MissionLog& log, const SimAdjustment& a,
                            std::span<const double> times, const TermReplayOptions& opt) {
@@ -184,15 +201,20 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
   for (std::size_t i = 1; i < T.size(); ++i) d.push_back(T[i] - T[i - 1]);
   std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
   const double gap_s = std::max(30.0, 20.0 * d[d.size() / 2]);
+  const std::vector<bool> surfaced = surfaceRows(log, opt.surface_depth_m, gap_s);
   std::vector<std::pair<std::size_t, std::size_t>> spans;
   for (std::size_t r0 = 0; r0 < T.size();) {
+    if (surfaced[r0]) {
+      ++r0;
+      continue;
+    }
     std::size_t r1 = r0 + 1;
     const auto horizonEnds = [&](std::size_t r) { return opt.restart_every_s > 0.0 && T[r] - T[r0] >= opt.restart_every_s; };
-    while (r1 < T.size() && T[r1] - T[r1 - 1] <= gap_s && !horizonEnds(r1)) ++r1;
+    while (r1 < T.size() && T[r1] - T[r1 - 1] <= gap_s && !horizonEnds(r1) && !surfaced[r1]) ++r1;
     spans.push_back({r0, r1});
     r0 = r1;
   }
-  if (spans.size() == 1) return replayOneSpan(base, apcfg, water, log, a, times, opt);
+  if (spans.size() == 1 && spans.front().first == 0 && spans.front().second == T.size()) return replayOneSpan(base, apcfg, water, log, a, times, opt, false);
 
   TermReplayTrace tr;
   for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps, &tr.since_start_s})
@@ -208,7 +230,7 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
       }
     }
     if (sub.empty()) continue;
-    const TermReplayTrace part = replayOneSpan(base, apcfg, water, sliceRows(log, r0, r1), a, sub, opt);
+    const TermReplayTrace part = replayOneSpan(base, apcfg, water, sliceRows(log, r0, r1), a, sub, opt, r0 > 0);
     for (std::size_t j = 0; j < at.size(); ++j) {
       tr.depth_m[at[j]] = part.depth_m[j];
       tr.pitch_rad[at[j]] = part.pitch_rad[j];

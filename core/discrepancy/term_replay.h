@@ -8,6 +8,7 @@
 // log (pitch/roll bias, depth offset). The loop is sim::replay's (same
 // StepEngine, grid, drives and autopilot); with no hooks active it gives the
 // same trace, which a test checks (docs/decisions/model-check-replay.md).
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -39,6 +40,12 @@ struct TermReplayOptions {
   // the water's unlogged motion and the autopilot's reaction to sensor noise
   // do not accumulate into phase errors that no model can reproduce).
   double restart_every_s = 0.0;
+  // Rows with a logged depth shallower than this, for at least the drop-out
+  // length (below), are a surface interval: the model has no surface (no
+  // emerged hull, no waves, no surface behaviour), so it does not fly them;
+  // the replay ends before and restarts from the logged state after, as at a
+  // drop-out. -inf: never.
+  double surface_depth_m = -std::numeric_limits<double>::infinity();
 };
 
 // Simulated sensor readings at `times` (ascending, within the log).

@@ -9,6 +9,7 @@
 #include "common/units.h"
 #include "missionlog/resample.h"
 #include "sim/heading_control.h"
+#include "sim/replay_start.h"
 #include "sim/step_engine.h"
 
 namespace auv::sim {
@@ -55,18 +56,6 @@ class GridChannel {
   std::vector<double> values_;
   double last_ = kNaN;
 };
-
-// Value of `name` at t0; if the log has none there, its first sample after t0
-// (a span may start on a row where that sensor dropped out).
-double valueAt(const MissionLog& log, const char* name, double t0, double fallback) {
-  if (!hasSamples(log, name)) return fallback;
-  const TimeSeries s = log.series(name);
-  const std::vector<double> v = resample(s, std::vector<double>{t0}, {Interpolation::kLinear});
-  if (!std::isnan(v.front())) return v.front();
-  const auto it = std::lower_bound(s.t.begin(), s.t.end(), t0);
-  if (it != s.t.end()) return s.v[static_cast<std::size_t>(it - s.t.begin())];
-  return s.v.back();
-}
 
 // Rows further apart than this split the replay into spans; the model
 // restarts from the first row after the gap. 20 typical row spacings, at
@@ -168,13 +157,7 @@ void replaySpan(const SpanContext& c, Drivers& d, std::size_t row0, std::size_t 
                          &d.rudder})
     g->restart();
 
-  InitialState init;
-  init.depth_m = valueAt(log, "depth", t0, 0.0);
-  init.pitch_rad = units::degToRad(valueAt(log, "pitch", t0, 0.0));
-  init.roll_rad = units::degToRad(valueAt(log, "roll", t0, 0.0));
-  init.heading_rad = units::degToRad(valueAt(log, "heading", t0, 0.0));
-  init.speed_mps = valueAt(log, "speed", t0, 0.0);
-  init.prop_rps = valueAt(log, "prop_rpm", t0, 0.0) / 60.0;
+  const InitialState init = replayStartState(log, t0, c.model, row0 > 0);
 
   StepEngine eng(c.model, c.water, dt, c.opt.surface_model);
   eng.start(init, c.opt.loading);

@@ -24,8 +24,15 @@ void StepEngine::start(const InitialState& init, const VehicleLoading& loading) 
   s_[kTheta] = init.pitch_rad;
   s_[kPhi] = init.roll_rad;
   s_[kU] = init.speed_mps;
+  if (init.depth_rate_mps) {
+    // depth rate = -u sin(theta) + w cos(theta) cos(phi) (measure(), below)
+    const double c = std::cos(init.pitch_rad) * std::cos(init.roll_rad);
+    if (c > 0.1) s_[kW] = (*init.depth_rate_mps + init.speed_mps * std::sin(init.pitch_rad)) / c;
+  }
   act_ = {};
   act_.prop_rps = init.prop_rps;
+  act_.plane_rad = init.plane_rad;
+  act_.thruster_rpm = init.thruster_rpm;
   yaw_ = {};
   yaw_.heading_rad = init.heading_rad;
   t_s_ = 0.0;

@@ -5,6 +5,9 @@
 // held (zero-order hold at the model rate), the heading beside it, and the
 // actuators moving towards their demands. Owns no storage that grows: the
 // loops that drive it stay free of allocation.
+#include <array>
+#include <optional>
+
 #include "sim/actuator_state.h"
 #include "sim/dynamics.h"
 #include "sim/flown_mass.h"
@@ -28,6 +31,12 @@ struct InitialState {
   double heading_rad = 0.0;
   double speed_mps = 0.0;
   double prop_rps = 0.0;
+  // A start in motion (a replay from a logged row mid-dive): the depth rate
+  // through the water [m/s, down positive] sets the heave velocity; the
+  // planes and thrusters start where they were. Unset: at rest in heave.
+  std::optional<double> depth_rate_mps;
+  double plane_rad = 0.0;  // paper sign: positive = nose-up moment
+  std::array<double, kMaxThrusters> thruster_rpm{};
 };
 
 // What the trace records besides the state: set points and controller outputs.
