@@ -539,6 +539,7 @@ void AuvCheckModel::replayError(const Params& p, double restart_every_s, double 
   o.mass_reference_time_s = t_ref_;
   o.restart_every_s = restart_every_s;
   o.surface_depth_m = opt_.min_depth_m;  // the rows the equation error leaves out as surface rows
+  o.surface_model = true;
   const TermReplayTrace tr = termReplay(calibratedModel(p), autopilot_, water_, log_, simAdjustment(total(p)), table_.t, o);
   const std::size_t N = rowGrid_.size();
   out.assign(5 * N, kNaN);

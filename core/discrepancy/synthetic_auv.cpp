@@ -47,6 +47,7 @@ MissionLog synthesizeAuvLog(const sim::SimVehicle& vehicle, const std::string& i
   sim::SimOptions o;
   o.trace_interval_s = m.trace_interval_s;
   o.seed = m.seed;
+  o.surface_model = m.surface_model;
   o.noise = m.noise;
   if (m.default_noise) {
     o.noise.depth_m = 0.01;

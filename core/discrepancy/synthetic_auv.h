@@ -37,6 +37,10 @@ struct SyntheticAuvMission {
   std::vector<double> prop_demands = {14.0, 20.0, 26.0};
   std::vector<sim::CtdPoint> cast = {{0.0, 14.0, 34.0}, {8.0, 12.0, 34.5}, {15.0, 9.0, 35.0}, {40.0, 8.0, 35.1}};
   double trace_interval_s = 0.2;
+  // The emerged hull loses its buoyancy (sim::SimOptions::surface_model): a
+  // vehicle too buoyant to hold depth floats at the surface instead of
+  // climbing on through a sea that is not there.
+  bool surface_model = false;
   sim::SensorNoise noise;  // default: depth 1 cm, pitch 0.05 deg, roll 0.05 deg, speed 1 cm/s, T 2 mK, S 3e-3, p 0.01 dbar
   std::uint64_t seed = 1;
   bool default_noise = true;

@@ -87,7 +87,7 @@ TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAut
   // The log's depth rate is over ground; the vehicle moves through the water.
   if (init.depth_rate_mps) *init.depth_rate_mps += a.vertical_current_mps;
 
-  sim::StepEngine eng(model, water, dt, false);
+  sim::StepEngine eng(model, water, dt, opt.surface_model);
   eng.start(init, opt.loading);
   const long control_every = std::max(1L, std::lround(apcfg.sample_time_s / dt));
   sim::DepthAutopilot ap(apcfg, model);

@@ -46,6 +46,9 @@ struct TermReplayOptions {
   // the replay ends before and restarts from the logged state after, as at a
   // drop-out. -inf: never.
   double surface_depth_m = -std::numeric_limits<double>::infinity();
+  // The emerged hull loses its buoyancy (sim::SimOptions::surface_model): a
+  // replay that breaks the surface floats there, as the vehicle did.
+  bool surface_model = false;
 };
 
 // Simulated sensor readings at `times` (ascending, within the log).

@@ -71,6 +71,7 @@ inline SyntheticAuvMission drawnMission(std::uint64_t seed) {
   m.prop_demands = {14.0, 20.0, 26.0};
   m.cast = {{0.0, 16.0, 34.0}, {15.0, 15.5, 34.2}, {25.0, 10.0, 34.8}, {40.0, 8.5, 35.0}, {120.0, 7.5, 35.1}};
   m.seed = seed;
+  m.surface_model = true;  // a drawn truth too buoyant for its slow legs floats, as a real one would
   return m;
 }
 

@@ -1,8 +1,11 @@
 // Where the model check's replay restarts from the log: a surface interval
-// ends a span as a drop-out does (the model has no surface), and a restart
-// mid-dive begins with the logged depth rate and actuators, not at rest.
+// ends a span as a drop-out does (the model has no waves and no surface
+// behaviour), and a restart mid-dive begins with the logged depth rate and
+// actuators, not at rest. With the surface model a vehicle that breaks the
+// surface floats there, in the synthetic truth and in the replay.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -112,6 +115,45 @@ TEST(TermReplayRestart, ARestartMidClimbStartsWithTheLoggedDepthRate) {
   const TermReplayTrace rest = termReplay(d.vehicle.model, d.vehicle.autopilot, water, still, {}, still.time, TermReplayOptions{});
   EXPECT_NEAR(rest.vertical_velocity_mps[r0], 0.0, 0.05);
   EXPECT_GT(rest.depth_m[r10] - z[r10], 0.25);  // measured 0.39 m
+}
+
+// A Delphin2 3 kg too buoyant on a slow leg: the thrusters and planes cannot
+// hold it down.
+MissionLog buoyantLog(bool surface_model) {
+  const Dive& d = dive();
+  SyntheticAuvTruth t;
+  t.ballast_error.net_buoyancy_kg = 3.0;
+  SyntheticAuvMission m;
+  m.legs_count = 2;
+  m.leg_s = 300.0;
+  m.depths_m = {5.0, 5.0};
+  m.prop_demands = {14.0, 14.0};
+  m.seed = 3;
+  m.surface_model = surface_model;
+  return synthesizeAuvLog(d.vehicle, "delphin2", t, m);
+}
+
+double minOf(const std::vector<double>& v) {
+  double m = 1e300;
+  for (double x : v)
+    if (std::isfinite(x)) m = std::min(m, x);
+  return m;
+}
+
+TEST(TermReplayRestart, ATooBuoyantVehicleFloatsAtTheSurfaceInTheTruthAndInTheReplay) {
+  const MissionLog sky = buoyantLog(false), sea = buoyantLog(true);
+  ASSERT_LT(minOf(sky.channel("depth").values), -3.0) << "the test needs a vehicle that cannot stay down";
+  EXPECT_GT(minOf(sea.channel("depth").values), -0.3) << "with the surface model it floats";
+  const Dive& d = dive();
+  const sim::WaterColumn water = sim::waterColumnFromLog(sea);
+  TermReplayOptions o;
+  o.loading.error.net_buoyancy_kg = 3.0;
+  o.surface_model = true;
+  const TermReplayTrace tr = termReplay(d.vehicle.model, d.vehicle.autopilot, water, sea, {}, sea.time, o);
+  EXPECT_GT(minOf(tr.depth_m), -0.3);
+  o.surface_model = false;
+  const TermReplayTrace noSurface = termReplay(d.vehicle.model, d.vehicle.autopilot, water, sea, {}, sea.time, o);
+  EXPECT_LT(minOf(noSurface.depth_m), -3.0) << "without it the replay climbs on out of the water";
 }
 
 }  // namespace
