@@ -169,8 +169,9 @@ int runPlan(const PlanOpts& o) {
   j["sources"] = {{"analysis", s.report_name}, {"installed", o.installed.empty() ? "history" : "flags"},
                   {"water", source}};
   if (o.no_surface_check) j["warnings"].push_back("surface check disabled (--no-surface-check)");
-  if (model_terms > 0)
-    j["notes"].push_back("vehicle model from the history: " + std::to_string(model_terms) + " accepted model-check term(s)");
+  if (h.model_from_history)
+    j["notes"].push_back("vehicle model from the history: " + std::to_string(model_terms) + " accepted model-check term(s), " +
+                         std::to_string(h.model_calibrated) + " calibrated constant(s)");
 
   if (store && h.configuration_known && !o.no_save) {
     Transaction tx(store->database());

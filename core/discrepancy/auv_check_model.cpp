@@ -29,7 +29,6 @@ void require(const MissionLog& log, const char* name, const char* why) {
     throw InputError(name, std::string("the log has no ") + name + " channel, needed " + why,
                      "a model check of an AUV needs depth, pitch, roll, speed, prop_rpm and elevator");
 }
-
 }  // namespace
 
 AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, const sim::VehicleModel& model,
@@ -296,7 +295,6 @@ constexpr CalibrationSpec kCalibration[] = {
     {kDrag, "surge_drag", "surge drag X_u, X_uu", "x profile"},
 };
 constexpr double kGroupSigma = 0.3;  // default prior sigma of a hydrodynamic group (issue 11)
-
 }  // namespace
 
 double AuvCheckModel::profileTorque() const {
@@ -439,7 +437,9 @@ bool AuvCheckModel::applicable(std::size_t term) const {
   if (t.id == "depth_sensor_offset") return has_depth_ref_;
   if (t.id == "quadratic_pitch_damping") return model_.hydro.Mqq_kgm2 != 0.0;
   if (t.id == "propeller_torque") return false;  // a calibration constant of the AUV, not missing physics
-  return true;
+  // A steady vertical current over a survey is not ocean physics; here it only stood in for the
+  // calibrated groups (docs/decisions/model-check-selection.md).
+  return t.id != "vertical_current";
 }
 
 void AuvCheckModel::equationError(const Params& prm, std::span<const std::uint32_t> rows, double* out) const {

@@ -39,6 +39,8 @@ HistoryPlanInputs planInputsFromHistory(HistoryStore& store, const std::string& 
   if (const auto m = store.latestModelTerms(config_id, now); m && m->model.contains("profile")) {
     in.vehicle = discrepancy::vehicleFromStoredProfile(m->model["profile"], base, "history model of " + config_id);
     in.model_terms = m->model.value("accepted", nlohmann::json::array()).size();
+    const nlohmann::json& mc = m->model["profile"].value("model_check", nlohmann::json::object());
+    in.model_calibrated = mc.value("calibrated", nlohmann::json::array()).size();
     in.model_from_history = true;
   }
   in.installed = store.latestInstalled(config_id, now);

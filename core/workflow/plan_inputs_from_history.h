@@ -25,6 +25,7 @@ struct HistoryPlanInputs {
   bool configuration_known = false;
   VehicleProfile vehicle;          // the configuration's model, else the base profile
   std::size_t model_terms = 0;     // accepted model-check terms in that model
+  std::size_t model_calibrated = 0;  // constants calibrated by model checks in it (hydrodynamics, torque)
   bool model_from_history = false;
   std::optional<InstalledState> installed;  // the latest (installedKg: in profile order)
   std::optional<double> total_mass_kg;  // recorded vehicle mass with those pieces

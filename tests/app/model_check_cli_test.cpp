@@ -119,8 +119,15 @@ TEST(ModelCheckCli, AcceptIntoAConfigurationThenPlanThenTheNextMissionCalibrates
   // The plan starts from the model check's own estimate and flies the
   // calibrated hydrodynamics (the level-flight pitch needs them).
   EXPECT_NEAR(p1["estimate"]["net_buoyancy_kg"].get<double>(), mc1["net_buoyancy_kg"].get<double>(), 1e-9);
+  // The model is the configuration's even with no term accepted: its
+  // calibrated constants (torque, hydrodynamic groups) are in it.
   bool model_note = false;
-  for (const auto& n : p1["notes"]) model_note = model_note || n.get<std::string>().find("vehicle model from the history") != std::string::npos;
+  for (const auto& n : p1["notes"]) {
+    const std::string t = n.get<std::string>();
+    if (t.find("vehicle model from the history") == std::string::npos) continue;
+    model_note = true;
+    EXPECT_EQ(t.find(" 0 calibrated constant"), std::string::npos) << t;
+  }
   EXPECT_TRUE(model_note) << p1["notes"].dump();
   std::vector<double> after;
   for (const auto& pt : p1["recommendation"]["points"]) after.push_back(pt["add_kg"].get<double>());

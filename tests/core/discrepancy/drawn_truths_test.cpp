@@ -72,5 +72,19 @@ TEST(DrawnTruths, AVehicleThatSurfacesMidLogStillShowsItsMassDrift) {
   EXPECT_EQ(o.false_terms, 0);
 }
 
+TEST(DrawnTruths, AMunkInsideControlNamesNoVerticalCurrent) {
+  // Truth 105 (Munk moment inside M_w, heave x 0.81) is a control. The check
+  // named a steady downward current of 0.9 mm/s on it, and it found one of
+  // 0.3-0.9 mm/s on every Munk-inside control, noise-free logs too: a stand-in
+  // for the calibrated groups, not water motion. The AUV check no longer
+  // offers a survey-long vertical current.
+  const DrawnCase c = drawnCases()[0];
+  ASSERT_TRUE(c.expected.empty());
+  const DrawnOutcome o = runDrawnCase(nominal(), c, {105}, true);
+  printDrawnRow(o);
+  EXPECT_EQ(o.false_terms, 0);
+  EXPECT_EQ(o.torque_missing, 0);
+}
+
 }  // namespace
 }  // namespace auv::discrepancy::test
