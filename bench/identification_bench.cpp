@@ -113,6 +113,7 @@ int main(int argc, char** argv) {
   h.use_transients = transients;
   h.fly_manoeuvre = fly_manoeuvre;
   std::vector<double> en, ex, ey, en2, ex2;
+  std::vector<double> droll1, dpitch1;  // |flown after one move - the plan's prediction|
   int known = 0, cov_n = 0, cov_x = 0, cov_y = 0, y_known = 0, cov_n2 = 0, cov_x2 = 0;
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;
   int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0, twice = 0, asked = 0, flown = 0;
@@ -156,6 +157,8 @@ int main(int argc, char** argv) {
     }
     if (r.looped) {
       ++looped;
+      if (std::isfinite(r.one.roll_deg - r.plan_roll_deg)) droll1.push_back(std::abs(r.one.roll_deg - r.plan_roll_deg));
+      if (std::isfinite(r.one.pitch_deg - r.plan_pitch_deg)) dpitch1.push_back(std::abs(r.one.pitch_deg - r.plan_pitch_deg));
       spec += r.one.spec, net_ok += r.one.net_ok, pitch_ok += r.one.pitch_ok, roll_ok += r.one.roll_ok,
           safe += r.one.safe;
       spec2 += r.two.spec, net2 += r.two.net_ok, pitch2 += r.two.pitch_ok, roll2 += r.two.roll_ok,
@@ -187,6 +190,10 @@ int main(int argc, char** argv) {
   if (loop)
     std::printf("  one move: spec %d of %d (logs with >= 3 steady speeds: %d of %d); net %d, pitch %d, roll %d; never negative %d of %d\n",
                 spec, looped, spec3, n3, net_ok, pitch_ok, roll_ok, safe, looped);
+  if (loop)
+    std::printf("  one move, flown - predicted by the plan: |roll| %.3f / %.3f deg, |flight pitch| %.3f / %.3f deg, "
+                "median / p90\n",
+                quantile(droll1, 0.5), quantile(droll1, 0.9), quantile(dpitch1, 0.5), quantile(dpitch1, 0.9));
   if (loop)
     std::printf("  two moves (second from the joint history calibration): spec %d of %d (>= 3 steady speeds: %d of %d); "
                 "net %d, pitch %d, roll %d; never negative in either %d of %d flown twice\n",

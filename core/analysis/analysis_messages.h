@@ -119,6 +119,10 @@ inline constexpr MessageFormat kPosteriorSigmasMunk{
 inline constexpr MessageFormat kBgFromProfile{
     "analysis.bg_from_profile",
     "BG from the profile (%1 mm +- %2 %) sets the scale of the pitch moments; --bg-mm from a roll test sharpens CG x"};
+inline constexpr MessageFormat kTrimmedCruise{
+    "analysis.trimmed_cruise",
+    "trimmed, the vehicle should cruise at %1 m/s at %2 rpm (the log: %3 m/s); the propeller torque there changes by "
+    "%4 N m, which the cruise CG y for the plan includes (%5 mm)"};
 #undef AUV_NOT_ID
 
 // Every analysis message, for completeness checks of the translations.
@@ -128,6 +132,6 @@ inline constexpr const MessageFormat* kAll[] = {
     &kLogMassDiffers, &kGliderFitNotConverged, &kGliderDefaultConstants, &kGliderDefaultCompressibility,
     &kNoRollSamples, &kNoPropRpm, &kOneCruiseRpm, &kCgYNeedsBg, &kNoSteadyLevelSegment, &kNoSpeed, &kNoSpeedAndPitch,
     &kNoElevator, &kHistoryCalibration, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
-    &kPosteriorSigmas, &kPosteriorSigmasMunk, &kBgFromProfile};
+    &kPosteriorSigmas, &kPosteriorSigmasMunk, &kBgFromProfile, &kTrimmedCruise};
 
 }  // namespace auv::analysis::msg

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/units.h"
+
 namespace auv::analysis {
 
 namespace {
@@ -59,6 +61,11 @@ nlohmann::json toJson(const AnalysisReport& r) {
                    {"roll_sigma_deg", num(r.cruise_roll_deg.sigma)},
                    {"cg_y_mm", r.cruise_cg_y_mm.known ? num(r.cruise_cg_y_mm.value) : nullptr},
                    {"cg_y_sigma_mm", r.cruise_cg_y_mm.known ? num(r.cruise_cg_y_mm.sigma) : nullptr}};
+    if (const auto& t = r.cruise_trimmed) {
+      j["cruise"]["trimmed"] = {{"speed_mps", num(t->speed_mps)},
+                                {"torque_change_nm", num(t->torque_change_nm)},
+                                {"cg_y_shift_mm", num(units::mToMm(t->y_shift_m))}};
+    }
   }
   if (r.vehicle_kind == "glider") {
     j["mass_to_add_g"] = r.mass_to_add_g.known ? num(r.mass_to_add_g.value) : nullptr;

@@ -7,6 +7,7 @@
 // and for gliders mass_to_add_g / mass_to_add_sigma_g. A quantity the log
 // cannot determine is null and `not_identifiable` says why.
 #include <limits>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -62,6 +63,9 @@ struct AnalysisReport {
   double cruise_rpm = std::numeric_limits<double>::quiet_NaN();
   double cruise_speed_mps = std::numeric_limits<double>::quiet_NaN();
   EstimatedValue cruise_roll_deg, cruise_cg_y_mm;
+  // The cruise once trimmed, when its speed (and so the torque) differs from
+  // the log's: cruise_cg_y_mm then includes the torque change.
+  std::optional<TrimmedCruise> cruise_trimmed;
   // Gliders: signed grams to add for neutral buoyancy, pump at zero, in the
   // target water (density, pressure, temperature; `target_basis` says where
   // they came from).

@@ -11,6 +11,7 @@
 
 #include "analysis/auv_roll_estimation.h"
 #include "analysis/level_flight.h"
+#include "analysis/trimmed_cruise.h"
 #include "common/units.h"
 
 namespace auv::analysis {
@@ -225,6 +226,19 @@ std::optional<AuvTrimEstimate::AfterMove> predictAfterMove(const SteadyHydroCoef
   return out;
 }
 
+// The plan levels the roll the trimmed vehicle flies: at its own cruise
+// speed, where the propeller torque differs from the log's (trimmed_cruise.h).
+void applyTrimmedCruise(std::span<const SteadySegmentMeans> segments, const AuvTrimContext& ctx, AuvTrimEstimate& out) {
+  if (!ctx.surge_model || !out.y_cruise_identified) return;
+  out.trimmed_cruise = trimmedCruise(*ctx.surge_model, segments, out, ctx, out.after_move ? out.after_move->net_kg : 0.6);
+  if (!out.trimmed_cruise) return;
+  const TrimmedCruise& t = *out.trimmed_cruise;
+  out.y_cruise_m += t.y_shift_m;
+  if (std::abs(t.speed_mps - t.logged_speed_mps) < 0.05) return;  // said only where it matters to the technician
+  out.notes.push_back(Message(msg::kTrimmedCruise, {fmt("%.2f", t.speed_mps), fmt("%.0f", t.rpm), fmt("%.2f", t.logged_speed_mps),
+                                                    fmt("%+.3f", t.torque_change_nm), fmt("%+.2f", units::mToMm(out.y_cruise_m))}));
+}
+
 }  // namespace
 
 AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, const SteadyHydroCoefficients* coeffs,
@@ -403,6 +417,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
   }
   out.manoeuvre = planManoeuvre(*coeffs, m, cal, meas, segments, seg_index, out);
   out.after_move = predictAfterMove(*coeffs, m, cal, meas, out);
+  applyTrimmedCruise(segments, ctx, out);
   if (!m.c.note.empty()) out.notes.push_back(m.c.note);
   std::string ident, prior;
   for (const auto& q : cal.parameters) (q.identified ? ident : prior) += (q.identified ? ident : prior).empty() ? q.id : ", " + q.id;

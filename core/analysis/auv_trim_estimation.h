@@ -17,6 +17,7 @@
 #include "analysis/auv_calibration.h"
 #include "analysis/auv_steady_model.h"
 #include "analysis/statistics.h"
+#include "sim/vehicle_model.h"
 
 namespace auv::analysis {
 
@@ -72,6 +73,22 @@ struct AuvTrimContext {
   // jointly with the steady segments; empty = steady segments only.
   TransientResiduals transients;
   std::size_t transient_windows = 0;
+  // The simulator's model of the vehicle, for the surge balance of the
+  // trimmed cruise (trimmed_cruise.h); unset = the logged cruise speed stays.
+  std::optional<sim::VehicleModel> surge_model;
+};
+
+// The cruise speed after a move that trims the vehicle, and the torque change
+// it brings (trimmed_cruise.h).
+struct TrimmedCruise {
+  double rpm = 0.0;
+  double logged_speed_mps = 0.0;  // mean of the cruise-rpm level segments
+  double speed_mps = 0.0;         // predicted: level at the planned net buoyancy and CG x
+  // The drag the log shows beyond the model's, as k u^2 (N s^2/m^2): the
+  // surge balance of the model at the logged segments, which hold speed.
+  double extra_drag_n_per_mps2 = 0.0;
+  double torque_change_nm = 0.0;  // reaction torque at the trimmed speed minus at the logged one, roll sign
+  double y_shift_m = 0.0;         // what that adds to the cruise-equivalent CG y (torque / weight)
 };
 
 struct AuvTrimEstimate {
@@ -128,6 +145,9 @@ struct AuvTrimEstimate {
     double net_kg = 0.0, x_g_m = 0.0;  // the state assumed after the move
   };
   std::optional<AfterMove> after_move;
+  // Set when the trimmed vehicle cruises at another speed than the log's:
+  // y_cruise_m then holds the torque change (y_shift_m).
+  std::optional<TrimmedCruise> trimmed_cruise;
   std::vector<Message> notes, warnings;
 };
 

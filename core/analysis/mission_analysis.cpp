@@ -94,13 +94,9 @@ std::vector<double> thrusterRpmAboveDeadband(const MissionLog& log, const Vehicl
   std::vector<double> out(win.size(), 0.0);
   const char* channels[] = {"thruster_front_rpm", "thruster_aft_rpm"};
   if (!hasSamples(log, channels[0]) && !hasSamples(log, channels[1])) return out;
-  double deadband = 0.0;
-  try {
-    const sim::VehicleModel m = sim::loadVehicleModel(v);
-    for (int i = 0; i < m.thruster_count; ++i) deadband = std::max(deadband, m.thrusters[static_cast<std::size_t>(i)].deadband_rpm);
-  } catch (const std::exception&) {
-    // No simulator sections: any running thruster counts.
-  }
+  double deadband = 0.0;  // without simulator sections any running thruster counts
+  if (const auto m = simModelFromProfile(v))
+    for (int i = 0; i < m->thruster_count; ++i) deadband = std::max(deadband, m->thrusters[static_cast<std::size_t>(i)].deadband_rpm);
   for (const char* c : channels) {
     if (!hasSamples(log, c)) continue;
     std::vector<double> sum(win.size(), 0.0), n(win.size(), 0.0);
@@ -259,6 +255,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     AuvTrimContext ctx;
     ctx.profile_torque_nm_per_100rpm2 = profileTorqueAt100Rpm(v, rho);
     ctx.propeller = propellerLawFromProfile(v);
+    ctx.surge_model = simModelFromProfile(v);  // none: the cruise roll stays the logged speed's
     ctx.weight_n = (v.mass_kg + installed) * units::g0;
     ctx.density_kgm3 = rho;
     ctx.bg_measured_m = o.bg_m;
@@ -340,6 +337,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
       rep.cruise_roll_deg = {true, e.cruise_roll_deg, e.cruise_roll_sigma_deg, ""};
       rep.cruise_cg_y_mm = {e.y_cruise_identified, e.y_cruise_identified ? units::mToMm(e.y_cruise_m) : kNaN,
                             e.y_cruise_identified ? units::mToMm(e.y_cruise_sigma_m) : kNaN, e.y_why};
+      rep.cruise_trimmed = e.trimmed_cruise;
     }
     rep.calibration = e.calibration;
     segNb = e.segment_net_buoyancy_kg;

@@ -9,6 +9,7 @@
 
 #include "common/input_error.h"
 #include "common/units.h"
+#include "sim/model_loader.h"
 #include "vehicle/json_reader.h"
 
 namespace auv::analysis {
@@ -109,6 +110,14 @@ GliderFlightConstants gliderConstantsFromProfile(const VehicleProfile& v, std::v
     notes.push_back(Message(msg::kGliderDefaultCompressibility));
   }
   return c;
+}
+
+std::optional<sim::VehicleModel> simModelFromProfile(const VehicleProfile& v) {
+  try {
+    return sim::loadVehicleModel(v);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace auv::analysis

@@ -39,4 +39,8 @@ double profileTorqueAt100Rpm(const VehicleProfile& v, double rho);
 // actuators, nullopt when it has none.
 std::optional<AuvTrimContext::PropellerLaw> propellerLawFromProfile(const VehicleProfile& v);
 
+// The simulator's model of the vehicle (sim::loadVehicleModel), nullopt when
+// the profile has no simulator sections.
+std::optional<sim::VehicleModel> simModelFromProfile(const VehicleProfile& v);
+
 }  // namespace auv::analysis

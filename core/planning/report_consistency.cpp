@@ -64,7 +64,9 @@ void refuseUnknownReportKeys(const nlohmann::json& report, const std::string& re
       kReportDoc);
   refuseIfObject(root, "cg_offset_mm", {"x", "y"});
   refuseIfObject(root, "cg_offset_sigma_mm", {"x", "y"});
-  refuseIfObject(root, "cruise", {"prop_rpm", "speed_mps", "roll_deg", "roll_sigma_deg", "cg_y_mm", "cg_y_sigma_mm"});
+  refuseIfObject(root, "cruise", {"prop_rpm", "speed_mps", "roll_deg", "roll_sigma_deg", "cg_y_mm", "cg_y_sigma_mm", "trimmed"});
+  if (root.has("cruise") && root.node()["cruise"].is_object())
+    refuseIfObject(root.child("cruise"), "trimmed", {"speed_mps", "torque_change_nm", "cg_y_shift_mm"});
   refuseIfObject(root, "errors", {"depth_m", "pitch_deg", "roll_deg"});
   refuseIfObject(root, "water", {"temperature_degC", "salinity_psu", "density_kgm3", "pressure_dbar", "depth_m"});
 }

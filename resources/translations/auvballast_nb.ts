@@ -199,6 +199,11 @@
         <translation>BG fra fartøyprofilen (%1 mm ± %2 %) bestemmer skalaen på stampmomentene; BG fra en rulletest gjør tyngdepunkt x skarpere.</translation>
     </message>
     <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="62"/>
+        <source>Once trimmed, the vehicle should cruise at %1 m/s at %2 rpm (this log: %3 m/s); the propeller torque there changes by %4 N m, and the roll the plan levels includes it (CG y at cruise %5 mm).</source>
+        <translation>Når fartøyet er trimmet, bør det gå %1 m/s ved %2 o/min (denne loggen: %3 m/s); propellmomentet endres der med %4 N m, og rullingen planen retter opp tar det med (tyngdepunkt y i marsj %5 mm).</translation>
+    </message>
+    <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="66"/>
         <source>%1: no change (%2 stays).</source>
         <translation>%1: ingen endring (%2 blir).</translation>

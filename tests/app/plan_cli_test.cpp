@@ -249,4 +249,26 @@ TEST(PlanCli, ReportOfAnotherVehicleIsRefused) {
   EXPECT_NE(r.err.find(p), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("analyses vehicle 'slocum_g2', not 'hugin1000'"), std::string::npos) << r.err;
 }
+
+// The analysis writes cruise.trimmed (the trimmed vehicle's cruise speed and
+// torque change) when the log fitted the propeller torque: plan reads it, and
+// a misspelt key inside it is refused by its JSON path like any other.
+TEST(PlanCli, CruiseTrimmedIsReadAndAMisspeltKeyInsideIsRefused) {
+  auto report = [](const std::string& name, const std::string& trimmed_key) {
+    const std::string p = tempPath(name);
+    writeFile(p, R"({"vehicle": "hugin1000", "net_buoyancy_kg": 5.3, "net_buoyancy_sigma_kg": 0.1,
+      "cg_offset_mm": {"x": 12.0, "y": 1.5}, "cg_offset_sigma_mm": {"x": 0.05, "y": 0.01},
+      "cruise": {"prop_rpm": 160, "speed_mps": 1.9, "roll_deg": 4.0, "roll_sigma_deg": 0.05, "cg_y_mm": 1.4,
+                 "cg_y_sigma_mm": 0.02, "trimmed": {")" + trimmed_key + R"(": 2.0, "torque_change_nm": -3.2, "cg_y_shift_mm": -0.2}},
+      "water": {"temperature_degC": 8.0, "salinity_psu": 35.0, "depth_m": 100.0}})");
+    return p;
+  };
+  const std::string args = " --installed 10.8,10.8,22.8,22.8 --no-save --temperature 8 --salinity 35 --json -";
+  const auto ok = runCli("plan --vehicle hugin1000 --config 1-2-3 --report " + report("trimmed.json", "speed_mps") + args);
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  const auto bad = runCli("plan --vehicle hugin1000 --config 1-2-3 --report " + report("typo.json", "speed_mp") + args);
+  EXPECT_EQ(bad.code, 2) << bad.out;
+  EXPECT_NE(bad.err.find("speed_mp"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("trimmed"), std::string::npos) << bad.err;
+}
 }  // namespace auv

@@ -59,6 +59,7 @@ constexpr Advice kAdvice[] = {
   {"analysis.posterior_sigmas", QT_TRANSLATE_NOOP("Advice", "The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients).")},
   {"analysis.posterior_sigmas_munk", QT_TRANSLATE_NOOP("Advice", "The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients; the Munk moment's form unknown).")},
   {"analysis.bg_from_profile", QT_TRANSLATE_NOOP("Advice", "BG from the vehicle profile (%1 mm ± %2 %) sets the scale of the pitch moments; BG from a roll test sharpens CG x.")},
+  {"analysis.trimmed_cruise", QT_TRANSLATE_NOOP("Advice", "Once trimmed, the vehicle should cruise at %1 m/s at %2 rpm (this log: %3 m/s); the propeller torque there changes by %4 N m, and the roll the plan levels includes it (CG y at cruise %5 mm).")},
   // Ballast solver (core/ballast/ballast_messages.h).
   {"ballast.stays_heavy", QT_TRANSLATE_NOOP("Advice", "The vehicle stays %1 heavy even with every removable piece out: it needs added buoyancy or a lighter payload.")},
   {"ballast.node_limit", QT_TRANSLATE_NOOP("Advice", "The search stopped at its limit: this is the best change found, not a proved optimum.")},

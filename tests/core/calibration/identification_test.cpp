@@ -158,5 +158,34 @@ TEST(Identification, TheMoveCalibratesTheNextMissionAsPredicted) {
   EXPECT_GE(covered, n - 1);
 }
 
+
+// Item 8: the roll the plan predicts is the roll the trimmed vehicle flies.
+// A vehicle that flew its survey heavy or nose-down held depth with planes
+// and pitch and went slower than it will once trimmed; the propeller torque
+// falls with the advance ratio, so the log's cruise roll overstated the
+// torque the trimmed vehicle meets. The analysis now predicts the trimmed
+// cruise speed from the model's surge balance (trimmed_cruise.h) and the plan
+// levels that torque. Planned from the logged speed, the roll after the move
+// missed the plan's prediction by more than 0.15 deg on 5 of these 20 truths
+// (now 1: truth 1107, whose plan lands 10 kg light of the state assumed);
+// bench, seeds 1100/2100/3100: p90 0.25/0.66/0.33 -> 0.09/0.17/0.28 deg.
+TEST(Identification, TheRollAfterAMoveIsPredictedAtTheTrimmedCruiseSpeed) {
+  const Harness h;
+  int n = 0, close = 0;
+  double worst = 0.0;
+  for (std::uint64_t seed = 1100; seed < 1120; ++seed) {
+    const CaseResult r = h.run(seed, true);
+    if (!r.looped) continue;
+    SCOPED_TRACE(r.truth.describe());
+    ++n;
+    const double miss = std::abs(r.one.roll_deg - r.plan_roll_deg);
+    close += miss <= 0.15;
+    worst = std::max(worst, miss);
+  }
+  std::printf("  %d truths: roll after one move within 0.15 deg of the plan's in %d, worst %.2f deg\n", n, close, worst);
+  ASSERT_GE(n, 18);
+  EXPECT_GE(close, n - 2);
+}
+
 }  // namespace
 }  // namespace auv::identification
