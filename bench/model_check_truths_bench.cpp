@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   }
   const Delphin2Nominal d;
   std::printf("model check on drawn truths (Delphin2 profile given; %d truths per case)\n", n);
-  int top1 = 0, effects = 0, within = 0, controlFalse = 0, controls = 0, torque = 0, logs = 0;
+  int top1 = 0, effects = 0, named = 0, covered = 0, within = 0, controlFalse = 0, controls = 0, torque = 0, logs = 0;
   const std::vector<DrawnCase> cases = drawnCases();
   for (std::size_t ci = 0; ci < cases.size(); ++ci) {
     const DrawnCase& c = cases[ci];
@@ -50,10 +50,12 @@ int main(int argc, char** argv) {
       effects += o.logs;
       top1 += o.top1;
       within += o.within30;
+      named += o.named, covered += o.covered2;
     }
   }
   std::printf("TOTAL: top-1 right %d/%d (%.0f %%, target >= 90 %%)  value within 30 %% %d/%d  false terms on %d controls %d "
               "(target 0)  propeller_torque in missing_physics %d/%d logs (target 0)\n",
               top1, effects, 100.0 * top1 / std::max(1, effects), within, effects, controls, controlFalse, torque, logs);
+  std::printf("  stated sigma: the truth within 2 sigma for %d of %d named effects (target >= 90 %%)\n", covered, named);
   return 0;
 }

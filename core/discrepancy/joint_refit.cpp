@@ -63,6 +63,7 @@ Fit jointRefit(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, con
     mp.profile_value = m.profileTermValue(term);
     mp.value = mp.profile_value + fin.params.terms[term] * lib[term].display_scale;
     mp.sigma = fin.sigma[s.nN + pos] * lib[term].display_scale;
+    mp.sigma = std::max(mp.sigma, mp.split_half_sigma);  // model_check.h: the structure's share
   }
   for (int j = 0; j < s.nN; ++j) {
     R.nuisance.push_back(fin.params.nuisance[j]);

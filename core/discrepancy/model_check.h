@@ -75,6 +75,10 @@ struct MissingPhysics {
   std::string id, unit;
   double value = 0.0, sigma = 0.0;  // display unit: what the vehicle has (profile_value + the fitted increment)
   double profile_value = 0.0;       // what the profile assumed, display unit
+  // Half the difference of the values fitted on the two held-out halves
+  // (display unit): the spread the formal sigma misses where the model's
+  // structure, not the noise, limits the fit. `sigma` is never below it.
+  double split_half_sigma = 0.0;
   Channel channel = Channel::kDepth;   // simulation channel it improves most
   double rms_before = 0.0, rms_after = 0.0;  // held-out simulation RMS on `channel`, display unit
   Message where;

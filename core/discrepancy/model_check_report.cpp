@@ -43,6 +43,7 @@ nlohmann::json toJson(const ModelCheckResult& r) {
                         {"profile_value", num(m.profile_value)},
                         {"unit", m.unit},
                         {"sigma", num(m.sigma)},
+                        {"split_half_sigma", num(m.split_half_sigma)},
                         {"rms_before", num(m.rms_before)},
                         {"rms_after", num(m.rms_after)},
                         {"channel", channelName(m.channel)},

@@ -133,6 +133,8 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
     mp.delta_bic = sel.steps[step].delta_bic;
     mp.t_value = sel.steps[step].t_value;
     mp.heldout_gain = simBetter ? 1.0 - after / before : 1.0 - eqAfter / eqBefore;
+    if (ho.fits.size() == 2)
+      mp.split_half_sigma = 0.5 * std::abs(ho.fits[0].terms[term] - ho.fits[1].terms[term]) * lib[term].display_scale;
     // The channel the term helps most (relative to the base error).
     double bestGain = -std::numeric_limits<double>::infinity();
     for (std::size_t ch = 0; ch < SC; ++ch) {

@@ -78,6 +78,7 @@ inline SyntheticAuvMission drawnMission(std::uint64_t seed) {
 struct DrawnOutcome {
   std::string label, expected;
   int logs = 0, top1 = 0, within30 = 0, false_terms = 0, torque_missing = 0;
+  int named = 0, covered2 = 0;  // logs naming the effect; of those, its value within 2 stated sigmas of the truth
   std::vector<std::string> notes;
 };
 
@@ -105,10 +106,11 @@ inline DrawnOutcome runDrawnCase(const Delphin2Nominal& d, const DrawnCase& c, c
     std::string found;
     for (const MissingPhysics& m : r.missing_physics) {
       char b[96];
-      std::snprintf(b, sizeof b, " %s=%.3g", m.id.c_str(), effectOf(m));
+      std::snprintf(b, sizeof b, " %s=%.3g+-%.2g (halves %.2g)", m.id.c_str(), effectOf(m), m.sigma, m.split_half_sigma);
       found += b;
       if (m.id == "propeller_torque") ++o.torque_missing;
       if (m.id != c.expected) ++o.false_terms;
+      if (m.id == c.expected) ++o.named, o.covered2 += std::abs(effectOf(m) - c.truth) <= 2.0 * m.sigma;
     }
     if (!c.expected.empty() && !r.missing_physics.empty() && r.missing_physics[0].id == c.expected) {
       ++o.top1;
@@ -138,8 +140,9 @@ inline void printDrawnRow(const DrawnOutcome& o) {
     std::printf("%-30s logs %2d  false terms %2d  propeller_torque in missing_physics %2d\n", o.label.c_str(), o.logs,
                 o.false_terms, o.torque_missing);
   else
-    std::printf("%-30s logs %2d  top-1 %2d  within 30 %% %2d  other terms %2d  propeller_torque in missing_physics %2d\n",
-                o.label.c_str(), o.logs, o.top1, o.within30, o.false_terms, o.torque_missing);
+    std::printf("%-30s logs %2d  top-1 %2d  within 30 %% %2d  within 2 sigma %2d of %2d named  other terms %2d  "
+                "propeller_torque in missing_physics %2d\n",
+                o.label.c_str(), o.logs, o.top1, o.within30, o.covered2, o.named, o.false_terms, o.torque_missing);
 }
 
 }  // namespace auv::discrepancy::test

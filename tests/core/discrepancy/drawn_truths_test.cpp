@@ -47,13 +47,17 @@ TEST(DrawnTruths, ADampingIsJudgedOnShortReplays) {
   // Truth 700 (M_q' x 0.79, M_|q|q x 2): replayed over the whole log the
   // true vehicle itself scored worse than the fitted base without the term
   // (depth 0.072 against 0.058 m^2), so the term was refused. Replayed in
-  // 90 s horizons restarted from the log, the damping shows.
+  // 90 s horizons restarted from the log, the damping shows. Its formal
+  // sigma left the truth 4.5 sigma away (1.18 +- 0.04 for 1.0); the values
+  // fitted on the two held-out halves differ by 0.38, and the stated sigma
+  // now includes that spread.
   const DrawnCase c = drawnCases()[6];
   ASSERT_EQ(c.expected, "quadratic_pitch_damping");
   const DrawnOutcome o = runDrawnCase(nominal(), c, {700}, true);
   printDrawnRow(o);
   EXPECT_EQ(o.top1, 1);
   EXPECT_EQ(o.within30, 1);
+  EXPECT_EQ(o.covered2, 1);
   EXPECT_EQ(o.false_terms, 0);
 }
 
