@@ -31,10 +31,12 @@ using auv::testing::shot;
 
 namespace {
 
+// The cap only stops a hung test: the analyses take ~12 s alone but over
+// 60 s on a 2-core machine while the parallel ctest renders every page.
 void waitWhile(const std::function<bool()>& busy) {
   QElapsedTimer t;
   t.start();
-  while (busy() && t.elapsed() < 60000) QApplication::processEvents(QEventLoop::AllEvents, 20);
+  while (busy() && t.elapsed() < 240000) QApplication::processEvents(QEventLoop::AllEvents, 20);
   QApplication::processEvents();
 }
 
