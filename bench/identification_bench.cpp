@@ -42,6 +42,15 @@ double quantile(std::vector<double> v, double q) {
   return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
 }
 
+// The first log's flight-envelope findings, for the verbose line.
+std::string envelopeTags(const identification::CaseResult& r) {
+  std::string t;
+  if (r.too_light) t += " too-light";
+  if (r.too_heavy) t += " too-heavy";
+  if (r.porpoising) t += " porpoising";
+  return t.empty() ? t : " | envelope:" + t;
+}
+
 double timeAnalysis(const identification::Harness& h, double duration_s, double interval_s) {
   sim::SurveyRanges r;
   r.duration_min_s = r.duration_max_s = duration_s;
@@ -112,7 +121,8 @@ int main(int argc, char** argv) {
   h.log_interval_s = log_interval_s;
   h.use_transients = transients;
   h.fly_manoeuvre = fly_manoeuvre;
-  std::vector<double> en, ex, ey, en2, ex2;
+  std::vector<double> en, ex, ey, en2, ex2, zn, zx;  // zn, zx: |error| / sigma
+  int flagged = 0, light = 0, heavy = 0, porpoise = 0, flagged_miss2 = 0, clean = 0, clean_spec2 = 0;
   std::vector<double> droll1, dpitch1;  // |flown after one move - the plan's prediction|
   int known = 0, cov_n = 0, cov_x = 0, cov_y = 0, y_known = 0, cov_n2 = 0, cov_x2 = 0;
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;
@@ -139,14 +149,17 @@ int main(int argc, char** argv) {
                               " (predicted " + std::to_string(r.after_move_expected_x_sigma_mm) + ")" +
                               (r.manoeuvre_asked ? " manoeuvre expected s " + std::to_string(r.manoeuvre_expected_sigma_kg) +
                                                        (r.manoeuvre_flown ? " flown" : " not flown")
-                                                 : std::string()))
+                                                 : std::string()) +
+                              envelopeTags(r))
                                  .c_str()
-                           : "");
+                           : envelopeTags(r).c_str());
     for (const auto& q : r.calibration) identified[q.id] += q.identified ? 1 : 0;
     if (r.known) {
       ++known;
       en.push_back(std::abs(r.net_err_kg));
       ex.push_back(std::abs(r.x_err_mm));
+      if (r.net_sigma_kg > 0) zn.push_back(std::abs(r.net_err_kg) / r.net_sigma_kg);
+      if (r.x_sigma_mm > 0) zx.push_back(std::abs(r.x_err_mm) / r.x_sigma_mm);
       cov_n += std::abs(r.net_err_kg) <= 2 * r.net_sigma_kg;
       cov_x += std::abs(r.x_err_mm) <= 2 * r.x_sigma_mm;
     }
@@ -165,6 +178,10 @@ int main(int argc, char** argv) {
           safe2 += r.twice && r.two.safe && r.one.safe, twice += r.twice;
       if (r.log_rpms.size() >= 3) ++n3, spec3 += r.one.spec, spec23 += r.two.spec;
       asked += r.manoeuvre_asked, flown += r.manoeuvre_flown;
+      const bool off = r.too_light || r.too_heavy || r.porpoising;
+      flagged += off, light += r.too_light, heavy += r.too_heavy, porpoise += r.porpoising;
+      flagged_miss2 += off && !r.two.spec;
+      clean += !off, clean_spec2 += !off && r.two.spec;
     }
     if (r.twice && r.net2_sigma_kg > 0.0) {
       en2.push_back(std::abs(r.net2_err_kg));
@@ -179,6 +196,10 @@ int main(int argc, char** argv) {
   std::printf("  net buoyancy  %6.3f  %6.3f kg   %3d of %d\n", quantile(en, 0.5), quantile(en, 0.9), cov_n, known);
   std::printf("  CG x          %6.2f  %6.2f mm   %3d of %d\n", quantile(ex, 0.5), quantile(ex, 0.9), cov_x, known);
   std::printf("  CG y          %6.3f  %6.3f mm   %3d of %d\n", quantile(ey, 0.5), quantile(ey, 0.9), cov_y, y_known);
+  // Whether the sigmas are honest in size, not only in coverage: for a
+  // Gaussian |error| / sigma has median 0.67 and 90th percentile 1.64.
+  std::printf("  |error| / sigma (Gaussian: 0.67 / 1.64): net %.2f / %.2f, CG x %.2f / %.2f, median / p90\n",
+              quantile(zn, 0.5), quantile(zn, 0.9), quantile(zx, 0.5), quantile(zx, 0.9));
   std::printf("  identified by the log (of %d):", truths);
   for (const auto& [id, n] : identified) std::printf(" %s %d,", id.c_str(), n);
   std::printf("\n");
@@ -198,6 +219,10 @@ int main(int argc, char** argv) {
     std::printf("  two moves (second from the joint history calibration): spec %d of %d (>= 3 steady speeds: %d of %d); "
                 "net %d, pitch %d, roll %d; never negative in either %d of %d flown twice\n",
                 spec2, looped, spec23, n3, net2, pitch2, roll2, safe2, twice);
+  if (loop)
+    std::printf("  first logs not flown as commanded (details.flight_envelope): %d (too light %d, too heavy %d, "
+                "porpoising %d), %d of them missed after two moves; the other logs: spec after two moves %d of %d\n",
+                flagged, light, heavy, porpoise, flagged_miss2, clean_spec2, clean);
   if (loop)
     std::printf("  calibration manoeuvre: asked by %d first plans, flown in %d second missions%s\n", asked, flown,
                 fly_manoeuvre ? "" : " (not flown without --fly-manoeuvre)");

@@ -18,6 +18,21 @@ inline constexpr MessageFormat kWindowExcluded{"analysis.window_excluded",
 inline constexpr MessageFormat kAveragedLegs{
     "analysis.averaged_legs",
     "%1 leg(s) flown in a slow oscillation were averaged over whole cycles instead of steady windows"};
+inline constexpr MessageFormat kDepthNotHeldLight{
+    "analysis.depth_not_held_light",
+    "for %1 min at constant commands the vehicle stayed %2 m shallower than commanded (median) with its elevator at the "
+    "stop (%3 deg): it is too light or too stern-heavy for its planes at this speed, so this log measures little of its "
+    "ballast. Add weight forward in a small step and make a short test dive before a survey"};
+inline constexpr MessageFormat kDepthNotHeldHeavy{
+    "analysis.depth_not_held_heavy",
+    "for %1 min at constant commands the vehicle stayed %2 m deeper than commanded (median) with its elevator at the "
+    "stop (%3 deg): it is too heavy or too bow-heavy for its planes at this speed, so this log measures little of its "
+    "ballast. Remove weight forward in a small step and make a short test dive before a survey"};
+inline constexpr MessageFormat kPorpoising{
+    "analysis.porpoising",
+    "%1 constant-command leg(s), %2 min in all, were flown porpoising (pitch standard deviation up to %3 deg, period "
+    "about %4 s) and hold no steady flight: the depth autopilot limit-cycles on this vehicle, and the estimate rests on "
+    "the rest of the log. Retune the depth loop (lower gains) or raise BG; moving weights along the hull will not stop it"};
 inline constexpr MessageFormat kPitchBasisGlide{"analysis.pitch_basis_glide",
                                                 "measured - commanded, during glides whose command has the phase's sign"};
 inline constexpr MessageFormat kPitchBasisLevel{"analysis.pitch_basis_level", "measured - commanded, in steady level flight"};
@@ -127,7 +142,7 @@ inline constexpr MessageFormat kTrimmedCruise{
 
 // Every analysis message, for completeness checks of the translations.
 inline constexpr const MessageFormat* kAll[] = {
-    &kNoSteadyGlide, &kNoSteadyLevel, &kWindowExcluded, &kAveragedLegs, &kPitchBasisGlide, &kPitchBasisLevel, &kPitchBasisNoCommand,
+    &kNoSteadyGlide, &kNoSteadyLevel, &kWindowExcluded, &kAveragedLegs, &kDepthNotHeldLight, &kDepthNotHeldHeavy, &kPorpoising, &kPitchBasisGlide, &kPitchBasisLevel, &kPitchBasisNoCommand,
     &kNoDepthCommand, &kCtdOutOfRange, &kNoDensity, &kGliderCgX, &kGliderCgY, &kNoPumpVolume, &kNoPitch, &kNoSteadyDiveOrClimb, &kFewGlideSamples,
     &kLogMassDiffers, &kGliderFitNotConverged, &kGliderDefaultConstants, &kGliderDefaultCompressibility,
     &kNoRollSamples, &kNoPropRpm, &kOneCruiseRpm, &kCgYNeedsBg, &kNoSteadyLevelSegment, &kNoSpeed, &kNoSpeedAndPitch,

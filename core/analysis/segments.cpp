@@ -245,6 +245,7 @@ Segmentation detectSegments(const MissionLog& log, const SegmentOptions& o) {
     for (Segment& g : auvSteadyGlides(log, seg.phases, command_cut, o)) seg.operating.push_back(std::move(g));
   std::sort(seg.operating.begin(), seg.operating.end(),
             [](const Segment& a, const Segment& b) { return a.start_s < b.start_s; });
+  seg.command_cuts = command_cut;
   if (!o.average_oscillating_legs) return seg;
   const std::vector<Segment> legs = averagedLegs(log, depth, command_cut, seg.operating, o);
   if (legs.empty()) return seg;

@@ -84,6 +84,9 @@ struct Segmentation {
   std::vector<Segment> operating;  // kSteady or kGlide windows, in time order
   double max_depth_m = 0.0;
   std::vector<Message> notes;  // what was excluded and why
+  // AUV: where the depth command stepped or the propeller speed changed,
+  // extended by the settling time: the legs the mission planned lie between.
+  std::vector<TimeWindow> command_cuts;
 };
 
 // Needs a `depth` channel (or `pressure`, converted with the standard

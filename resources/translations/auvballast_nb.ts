@@ -25,6 +25,21 @@
     </message>
     <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
+        <source>For %1 min the vehicle stayed about %2 m above its commanded depth with the elevator at its stop (%3°): it is too light or too tail-heavy for its planes at this speed, so this log says little about its ballast. Add weight at the front in a small step and make a short test dive before a survey.</source>
+        <translation>I %1 min holdt fartøyet seg omtrent %2 m over beordret dybde med høyderoret i anslag (%3°): det er for lett eller for akterlastet for rorene ved denne farten, så denne loggen sier lite om ballasten. Legg til vekt forut i et lite steg og ta et kort prøvedykk før en kartlegging.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
+        <source>For %1 min the vehicle stayed about %2 m below its commanded depth with the elevator at its stop (%3°): it is too heavy or too nose-heavy for its planes at this speed, so this log says little about its ballast. Remove weight at the front in a small step and make a short test dive before a survey.</source>
+        <translation>I %1 min holdt fartøyet seg omtrent %2 m under beordret dybde med høyderoret i anslag (%3°): det er for tungt eller for forlastet for rorene ved denne farten, så denne loggen sier lite om ballasten. Fjern vekt forut i et lite steg og ta et kort prøvedykk før en kartlegging.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
+        <source>In %1 leg(s), %2 min in all, the vehicle porpoised (pitch swinging by up to %3° every %4 s or so) and never flew steadily: the depth autopilot overreacts on this vehicle, so the estimate comes from the rest of the log. Lower the depth autopilot&apos;s gains or lower the centre of gravity; moving weights forward or aft will not stop it.</source>
+        <translation>I %1 etappe(r), %2 min i alt, gikk fartøyet i bølgebevegelse (stamp som svinger med opptil %3° omtrent hvert %4 s) og fløy aldri stødig: dybdeautopiloten overreagerer på dette fartøyet, så estimatet kommer fra resten av loggen. Senk dybdeautopilotens forsterkning eller senk tyngdepunktet; å flytte vekter forover eller akterover vil ikke stoppe det.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
         <source>measured minus commanded, during glides whose command has the phase&apos;s sign</source>
         <translation>målt minus beordret, i glid der ordren har fasens fortegn</translation>
     </message>

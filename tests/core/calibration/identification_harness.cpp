@@ -164,6 +164,11 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
     r.after_move_expected_sigma_kg = d["auv_estimate"]["after_move_expected_sigma"]["net_buoyancy_kg"].get<double>();
     r.after_move_expected_x_sigma_mm = d["auv_estimate"]["after_move_expected_sigma"]["cg_x_mm"].get<double>();
   }
+  if (const auto& d = rj["details"]; d.contains("flight_envelope")) {
+    r.too_light = d["flight_envelope"].contains("too_light");
+    r.too_heavy = d["flight_envelope"].contains("too_heavy");
+    r.porpoising = d["flight_envelope"].contains("porpoising");
+  }
   if (rj.contains("calibration"))
     for (const auto& q : rj["calibration"]) {
       analysis::CalibrationParameter c;

@@ -29,6 +29,9 @@ struct CaseResult {
   double y_err_mm = 0.0, y_sigma_mm = 0.0;
   double analysis_s = 0.0;
   std::vector<analysis::CalibrationParameter> calibration;
+  // The first log's flight-envelope findings (details.flight_envelope): legs
+  // flown off the command at an elevator stop, too light or too heavy, or porpoising.
+  bool too_light = false, too_heavy = false, porpoising = false;
   // Closed loop: the survey's lines flown again at one depth after one
   // move, and after a second move planned from that mission analysed with
   // the first as history.

@@ -67,6 +67,29 @@ TEST(Identification, LimitCyclingAndSinkingVehiclesKeepTheirSpeeds) {
   }
 }
 
+// Logs a technician must hear about before trusting any estimate
+// (flight_envelope.h): 3100 (net +6.6 kg, CG x -23 mm, planes x0.65) rises
+// to the surface at the start and stays there nose up with the elevator at
+// its dive stop for the whole survey; 1130 (CG x +14 mm) sinks 96 m below
+// its command with the elevator at the climb stop; 2119 (BG 12 mm, heave
+// x0.77) porpoises +-25 deg every 24 s on most legs. 1101 flies as
+// commanded and is not flagged.
+TEST(Identification, LogsNotFlownAsCommandedAreFlagged) {
+  const Harness h;
+  struct Case {
+    std::uint64_t seed;
+    bool light, heavy, porpoising;
+  };
+  for (const Case c : {Case{3100, true, false, false}, Case{1130, false, true, false}, Case{2119, true, false, true},
+                       Case{1101, false, false, false}}) {
+    const CaseResult r = h.run(c.seed, false);
+    SCOPED_TRACE(r.truth.describe());
+    EXPECT_EQ(r.too_light, c.light);
+    EXPECT_EQ(r.too_heavy, c.heavy);
+    EXPECT_EQ(r.porpoising, c.porpoising);
+  }
+}
+
 // Truth 2123 flies two speeds with the elevator at 6 and 11 deg and very
 // quiet means (pitch and elevator to 0.004 deg). At the prior mean the
 // covariance of a segment's heave and pitch residuals is nearly singular,
