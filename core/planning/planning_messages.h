@@ -83,9 +83,14 @@ inline constexpr MessageFormat kRollAtCruise{
     "vehicle there, as the thesis judges roll (\u00a75.3.3)"};
 
 // Every plan message with a format, for completeness checks of the translations.
+inline constexpr MessageFormat kLogNotAsCommanded{
+    "plan.log_not_as_commanded",
+    "the analysed log was not flown as commanded (%1; see its warnings), so this move rests on a net buoyancy sigma of "
+    "%2 kg: after the move make a short test dive at the survey's speeds before the survey"};
 inline constexpr const MessageFormat* kAll[] = {
     &kNoChange, &kNextMission, &kMassFromLastMission, &kSafetyMargin, &kCgXAssumed, &kCgYAssumed, &kUnsafe,
     &kUnsafeSinks, &kAboveBandForMargin, &kBandNotReachable, &kOptionalPieces, &kWideSigma, &kClassicTable,
-    &kClassicBlocked, &kClassicStandardKit, &kManoeuvre, &kAfterMove, &kAfterMoveStillWide, &kRollAtCruise};
+    &kClassicBlocked, &kClassicStandardKit, &kManoeuvre, &kAfterMove, &kAfterMoveStillWide, &kRollAtCruise,
+    &kLogNotAsCommanded};
 
 }  // namespace auv::planning::msg

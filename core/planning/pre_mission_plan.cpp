@@ -216,6 +216,22 @@ PlanPolicy planPolicyFromString(const std::string& s) {
   throw InputError("policy", "unknown policy '" + s + "'", "use exact, half or classic");
 }
 
+namespace {
+
+// What the analysed log did not fly as commanded, in words; empty when it did.
+std::string notAsCommanded(const TrimEstimate& e) {
+  std::string s;
+  auto add = [&](bool on, const char* what) {
+    if (on) s += (s.empty() ? "" : ", ") + std::string(what);
+  };
+  add(e.log_too_light, "too light or stern-heavy to hold its depth");
+  add(e.log_too_heavy, "too heavy or bow-heavy to hold its depth");
+  add(e.log_porpoising, "porpoising");
+  return s;
+}
+
+}  // namespace
+
 PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in) {
   if (v.points.empty()) {
     throw InputError("vehicle", "profile '" + v.id + "' has no adjustment points", "add adjustment_points to the profile");
@@ -380,6 +396,8 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
                                      : "?"}));
   }
   explainPlan(v, pr, out);
+  if (const std::string off = notAsCommanded(in.estimate); !off.empty())
+    out.notes.push_back(Message(planning::msg::kLogNotAsCommanded, {off, num("%.2f", out.net_sigma_kg)}));
   if (in.estimate.cg_y_basis == "cruise" && in.estimate.cg_y_m) {
     char rpm[32];
     std::snprintf(rpm, sizeof rpm, "%.0f", in.estimate.cruise_rpm);

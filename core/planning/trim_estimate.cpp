@@ -94,6 +94,14 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
       if (a.contains("cg_x_mm") && a["cg_x_mm"].is_number()) e.after_move_x_sigma_m = a["cg_x_mm"].get<double>() * 1e-3;
     }
   }
+  if (report.contains("details") && report["details"].is_object() && report["details"].contains("flight_envelope")) {
+    const nlohmann::json& f = report["details"]["flight_envelope"];
+    if (f.is_object()) {
+      e.log_too_light = f.contains("too_light");
+      e.log_too_heavy = f.contains("too_heavy");
+      e.log_porpoising = f.contains("porpoising");
+    }
+  }
   return e;
 }
 

@@ -42,6 +42,10 @@ struct TrimEstimate {
   // The analysis's prediction for the next mission flown after a move and
   // analysed with this log as history (details.auv_estimate.after_move_expected_sigma).
   std::optional<double> after_move_net_sigma_kg, after_move_x_sigma_m;
+  // The analysed log's legs not flown as commanded (details.flight_envelope):
+  // off the command at an elevator stop, shallower (too light or stern-heavy)
+  // or deeper (too heavy or bow-heavy), or porpoising.
+  bool log_too_light = false, log_too_heavy = false, log_porpoising = false;
 };
 
 // Reads the analysis report JSON (issue #3 contract: net_buoyancy_kg,

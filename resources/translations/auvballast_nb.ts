@@ -25,6 +25,11 @@
     </message>
     <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
+        <source>The analysed log was not flown as commanded (see its warnings), so this move rests on a net buoyancy uncertainty of ±%2 kg: after the move, make a short test dive at the survey&apos;s speeds before the survey.</source>
+        <translation>Den analyserte loggen ble ikke fløyet som beordret (se advarslene), så denne flyttingen hviler på en usikkerhet i netto oppdrift på ±%2 kg: etter flyttingen, ta et kort prøvedykk ved kartleggingens hastigheter før kartleggingen.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
         <source>For %1 min the vehicle stayed about %2 m above its commanded depth with the elevator at its stop (%3°): it is too light or too tail-heavy for its planes at this speed, so this log says little about its ballast. Add weight at the front in a small step and make a short test dive before a survey.</source>
         <translation>I %1 min holdt fartøyet seg omtrent %2 m over beordret dybde med høyderoret i anslag (%3°): det er for lett eller for akterlastet for rorene ved denne farten, så denne loggen sier lite om ballasten. Legg til vekt forut i et lite steg og ta et kort prøvedykk før en kartlegging.</translation>
     </message>

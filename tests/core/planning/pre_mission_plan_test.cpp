@@ -382,3 +382,37 @@ TEST(PreMissionPlan, UnidentifiedCgIsAssumedAtCbWithAWarning) {
   EXPECT_TRUE(p.vehicle.cg_x_assumed);
   EXPECT_TRUE(anyContains(p.warnings, "CG x was not identified"));
 }
+
+// A log not flown as commanded (details.flight_envelope, analysis
+// flight_envelope.h) is read into the estimate, and the plan built on it
+// says so with the sigma it rests on; a log flown as commanded gets no note.
+TEST(PreMissionPlan, APlanFromALogNotFlownAsCommandedSaysSo) {
+  nlohmann::json r = nlohmann::json::parse(R"({
+    "net_buoyancy_kg": 2.5, "net_buoyancy_sigma_kg": 0.2,
+    "cg_offset_mm": {"x": -4.0, "y": null}, "cg_offset_sigma_mm": {"x": 0.3, "y": null},
+    "water": {"temperature_degC": 6.5, "salinity_psu": 34.5, "density_kgm3": null, "pressure_dbar": 50.0, "depth_m": 49.6},
+    "details": {"flight_envelope": {"leg_s": 7000.0,
+      "too_light": {"legs": 2, "seconds": 1500.0, "median_depth_error_m": -2.8, "elevator_stop_deg": 25.0},
+      "porpoising": {"legs": 9, "seconds": 7400.0, "pitch_sd_deg": 24.8, "period_s": 24.5}}}
+  })");
+  const TrimEstimate e = trimEstimateFromReport(r, "a.json");
+  EXPECT_TRUE(e.log_too_light);
+  EXPECT_FALSE(e.log_too_heavy);
+  EXPECT_TRUE(e.log_porpoising);
+  auto noteOf = [](const PreMissionPlan& p) -> std::string {
+    for (const Message& n : p.notes)
+      if (n.id() == "plan.log_not_as_commanded") return n;
+    return {};
+  };
+  PreMissionInput in = baseInput();
+  in.estimate = e;
+  const PreMissionPlan p = planPreMission(hugin(), in);
+  const std::string note = noteOf(p);
+  EXPECT_NE(note.find("too light or stern-heavy to hold its depth, porpoising"), std::string::npos) << note;
+  char sigma[16];
+  std::snprintf(sigma, sizeof sigma, "%.2f kg", p.net_sigma_kg);
+  EXPECT_NE(note.find(sigma), std::string::npos) << note;
+  r["details"]["flight_envelope"] = {{"leg_s", 7000.0}};
+  in.estimate = trimEstimateFromReport(r, "a.json");
+  EXPECT_EQ(noteOf(planPreMission(hugin(), in)), "");
+}
