@@ -1,5 +1,11 @@
 #include "analysis/flight_envelope.h"
 
+#include <cstdio>
+#include <string>
+
+#include "analysis/analysis_messages.h"
+#include "analysis/analysis_report.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -91,6 +97,12 @@ void addNotHeld(std::optional<DepthNotHeld>& f, double seconds, double err_m, do
   f->depth_error_m = median(errs);
 }
 
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
 }  // namespace
 
 FlightEnvelope flightEnvelope(const MissionLog& log, const TimeSeries& depth, const std::vector<TimeWindow>& command_cuts,
@@ -145,6 +157,27 @@ FlightEnvelope flightEnvelope(const MissionLog& log, const TimeSeries& depth, co
   }
   if (out.porpoising) out.porpoising->period_s = median(periods);
   return out;
+}
+
+// Legs not flown as commanded: a warning each, and details.flight_envelope.
+void reportFlightEnvelope(const FlightEnvelope& e, AnalysisReport& rep) {
+  nlohmann::json d = {{"leg_s", e.leg_seconds}};
+  auto notHeld = [&](const std::optional<DepthNotHeld>& f, const MessageFormat& m, const char* key) {
+    if (!f) return;
+    rep.warnings.push_back(Message(m, {fmt("%.0f", f->seconds / 60.0), fmt("%.1f", std::abs(f->depth_error_m)),
+                                       fmt("%.1f", f->elevator_stop_deg)}));
+    d[key] = {{"legs", f->legs}, {"seconds", f->seconds}, {"median_depth_error_m", f->depth_error_m},
+              {"elevator_stop_deg", f->elevator_stop_deg}};
+  };
+  notHeld(e.too_light, msg::kDepthNotHeldLight, "too_light");
+  notHeld(e.too_heavy, msg::kDepthNotHeldHeavy, "too_heavy");
+  if (e.porpoising) {
+    const Porpoising& p = *e.porpoising;
+    rep.warnings.push_back(Message(msg::kPorpoising, {std::to_string(p.legs), fmt("%.0f", p.seconds / 60.0),
+                                                      fmt("%.0f", p.pitch_sd_deg), std::isfinite(p.period_s) ? fmt("%.0f", p.period_s) : "?"}));
+    d["porpoising"] = {{"legs", p.legs}, {"seconds", p.seconds}, {"pitch_sd_deg", p.pitch_sd_deg}, {"period_s", std::isfinite(p.period_s) ? nlohmann::json(p.period_s) : nlohmann::json(nullptr)}};
+  }
+  rep.details["flight_envelope"] = d;
 }
 
 }  // namespace auv::analysis

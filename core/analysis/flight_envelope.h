@@ -20,6 +20,8 @@
 
 namespace auv::analysis {
 
+struct AnalysisReport;
+
 struct DepthNotHeld {
   double seconds = 0.0;          // leg time at the stop and off the command
   double depth_error_m = 0.0;    // median depth - command over those legs (< 0: shallower)
@@ -58,5 +60,9 @@ struct EnvelopeOptions {
 FlightEnvelope flightEnvelope(const MissionLog& log, const TimeSeries& depth, const std::vector<TimeWindow>& command_cuts,
                               const std::vector<Segment>& operating, const SegmentOptions& so,
                               const EnvelopeOptions& o = {});
+
+// A warning per finding in `rep` (analysis.depth_not_held_light/_heavy,
+// analysis.porpoising) and details.flight_envelope.
+void reportFlightEnvelope(const FlightEnvelope& e, AnalysisReport& rep);
 
 }  // namespace auv::analysis

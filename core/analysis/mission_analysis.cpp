@@ -114,27 +114,6 @@ std::vector<double> thrusterRpmAboveDeadband(const MissionLog& log, const Vehicl
 
 nlohmann::json numOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-// Legs not flown as commanded: a warning each, and details.flight_envelope.
-void reportFlightEnvelope(const FlightEnvelope& e, AnalysisReport& rep) {
-  nlohmann::json d = {{"leg_s", e.leg_seconds}};
-  auto notHeld = [&](const std::optional<DepthNotHeld>& f, const MessageFormat& m, const char* key) {
-    if (!f) return;
-    rep.warnings.push_back(Message(m, {fmt("%.0f", f->seconds / 60.0), fmt("%.1f", std::abs(f->depth_error_m)),
-                                       fmt("%.1f", f->elevator_stop_deg)}));
-    d[key] = {{"legs", f->legs}, {"seconds", f->seconds}, {"median_depth_error_m", f->depth_error_m},
-              {"elevator_stop_deg", f->elevator_stop_deg}};
-  };
-  notHeld(e.too_light, msg::kDepthNotHeldLight, "too_light");
-  notHeld(e.too_heavy, msg::kDepthNotHeldHeavy, "too_heavy");
-  if (e.porpoising) {
-    const Porpoising& p = *e.porpoising;
-    rep.warnings.push_back(Message(msg::kPorpoising, {std::to_string(p.legs), fmt("%.0f", p.seconds / 60.0),
-                                                      fmt("%.0f", p.pitch_sd_deg), std::isfinite(p.period_s) ? fmt("%.0f", p.period_s) : "?"}));
-    d["porpoising"] = {{"legs", p.legs}, {"seconds", p.seconds}, {"pitch_sd_deg", p.pitch_sd_deg}, {"period_s", numOrNull(p.period_s)}};
-  }
-  rep.details["flight_envelope"] = d;
-}
-
 }  // namespace
 
 AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, const AnalysisOptions& o) {
