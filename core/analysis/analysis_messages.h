@@ -111,6 +111,15 @@ inline constexpr MessageFormat kTransientsDropped{
     "analysis.transients_dropped",
     "the depth steps and speed changes disagreed among themselves more than they added (net buoyancy +- %1 kg with "
     "them, +- %2 kg from the steady segments alone): the estimate is the steady segments'"};
+inline constexpr MessageFormat kTransientsNotFlownAsCommanded{
+    "analysis.transients_not_flown_as_commanded",
+    "the depth steps and speed changes were not flown again (--transients): the vehicle did not fly as commanded "
+    "(too light or porpoising), and there the replay fits its plane stop and autopilot instead of its hydrodynamics; "
+    "the estimate is the steady segments'"};
+inline constexpr MessageFormat kTransientsWithHistory{
+    "analysis.transients_with_history",
+    "the depth steps and speed changes were not flown again (--transients): the earlier missions and the known "
+    "weight changes calibrate the vehicle, and the replay added model error, not information"};
 inline constexpr MessageFormat kDegenerate{
     "analysis.degenerate",
     AUV_NOT_ID "the steady segments do not determine the heave and pitch balance (degenerate geometry)"};
@@ -146,7 +155,7 @@ inline constexpr const MessageFormat* kAll[] = {
     &kNoDepthCommand, &kCtdOutOfRange, &kNoDensity, &kGliderCgX, &kGliderCgY, &kNoPumpVolume, &kNoPitch, &kNoSteadyDiveOrClimb, &kFewGlideSamples,
     &kLogMassDiffers, &kGliderFitNotConverged, &kGliderDefaultConstants, &kGliderDefaultCompressibility,
     &kNoRollSamples, &kNoPropRpm, &kOneCruiseRpm, &kCgYNeedsBg, &kNoSteadyLevelSegment, &kNoSpeed, &kNoSpeedAndPitch,
-    &kNoElevator, &kHistoryCalibration, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
+    &kNoElevator, &kHistoryCalibration, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kTransientsNotFlownAsCommanded, &kTransientsWithHistory, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
     &kPosteriorSigmas, &kPosteriorSigmasMunk, &kBgFromProfile, &kTrimmedCruise};
 
 }  // namespace auv::analysis::msg

@@ -184,6 +184,16 @@
         <translation>Dybdetrinnene og fartsendringene var mer uenige seg imellom enn de tilførte (netto oppdrift ± %1 kg med dem, ± %2 kg fra de stødige segmentene alene): estimatet er de stødige segmentenes.</translation>
     </message>
     <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
+        <source>The depth steps and speed changes were not flown again: the vehicle did not fly as commanded (too light or porpoising), and there the replay fits the plane stop and the autopilot instead of the hydrodynamics. The estimate is the steady segments&apos;.</source>
+        <translation>Dybdetrinnene og fartsendringene ble ikke fløyet på nytt: fartøyet fløy ikke som kommandert (for lett eller porpoising), og der tilpasser gjenavspillingen rorstoppet og autopiloten i stedet for hydrodynamikken. Estimatet er de stødige segmentenes.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="59"/>
+        <source>The depth steps and speed changes were not flown again: the earlier missions and the known weight changes calibrate the vehicle, and the replay added model error, not information.</source>
+        <translation>Dybdetrinnene og fartsendringene ble ikke fløyet på nytt: de tidligere oppdragene og de kjente vektendringene kalibrerer fartøyet, og gjenavspillingen tilførte modellfeil, ikke informasjon.</translation>
+    </message>
+    <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="55"/>
         <source>Not identifiable from this log: the steady segments do not determine the heave and pitch balance.</source>
         <translation>Kan ikke bestemmes fra denne loggen: de stødige segmentene bestemmer ikke balansen i hiv og stamp.</translation>
