@@ -143,7 +143,8 @@ int main(int argc, char** argv) {
                               std::to_string(r.one.pitch_deg) + " roll " + std::to_string(r.one.roll_deg) +
                               (r.one.spec ? " SPEC" : " miss") + " | two: net " + std::to_string(r.two.net_op_kg) +
                               " pitch " + std::to_string(r.two.pitch_deg) + " roll " + std::to_string(r.two.roll_deg) +
-                              " (kit best " + std::to_string(r.two.kit_best_roll_deg) + ")" + (r.two.spec ? " SPEC" : " miss") + " | joint net err " + std::to_string(r.net2_err_kg) +
+                              " (planned net " + std::to_string(r.two.planned_net_kg) + " roll " + std::to_string(r.two.planned_roll_deg) +
+                              ", kit best " + std::to_string(r.two.kit_best_roll_deg) + ")" + (r.two.spec ? " SPEC" : " miss") + " | joint net err " + std::to_string(r.net2_err_kg) +
                               " s " + std::to_string(r.net2_sigma_kg) + " (predicted " +
                               std::to_string(r.after_move_expected_sigma_kg) + ") x err " + std::to_string(r.x2_err_mm) + " s " + std::to_string(r.x2_sigma_mm) +
                               " (predicted " + std::to_string(r.after_move_expected_x_sigma_mm) + ")" +

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 
 #include "missionlog/interchange_csv.h"
@@ -277,6 +276,8 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   r.plan_net_kg = plan.predicted.net_buoyancy_kg;
   r.plan_pitch_deg = plan.flight_pitch_after_deg.value_or(plan.predicted.pitch_deg);
   r.plan_roll_deg = plan.predicted.roll_deg;
+  r.one.planned_roll_deg = plan.predicted.roll_deg;
+  r.one.planned_net_kg = plan.predicted.net_buoyancy_kg;
   r.manoeuvre_asked = plan.calibration_manoeuvre.has_value();
   r.plan_after_move_sigma_kg = plan.after_move_net_sigma_kg;
   for (const Message& n : plan.notes) r.plan_note_ids.push_back(n.id());
@@ -304,6 +305,8 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   const double net2_truth = rep2.density_kgm3.mean * profile_.hull.volumeAt(rep2.temperature_degC.mean, rep2.pressure_dbar.mean) - f2.mass_kg;
   kitBest(rj2, net2_truth, f2.cg_x_m, after, r.two);
   const auto [plan2, after2] = planFrom(rj2, after);
+  r.two.planned_roll_deg = plan2.predicted.roll_deg;
+  r.two.planned_net_kg = plan2.predicted.net_buoyancy_kg;
   const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2);
   judge(f3, analyse(f3, profile_, after2, use_transients), r.two);
   r.twice = true;
@@ -315,3 +318,4 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
 }
 
 }  // namespace auv::identification
+

@@ -41,6 +41,8 @@ struct CaseResult {
     // The planner's roll and flight pitch when given the truth and the pieces
     // installed before this move: what the kit's capacities allow.
     double kit_best_roll_deg = 0.0, kit_best_pitch_deg = 0.0;
+    // What the plan that made this move predicted (roll at cruise, net at the operating point).
+    double planned_roll_deg = 0.0, planned_net_kg = 0.0;
   };
   bool looped = false, twice = false;  // twice: the second mission's joint estimate existed
   bool manoeuvre_asked = false, manoeuvre_flown = false;  // by the first plan; in the second mission
