@@ -194,8 +194,20 @@ TEST_F(PostMission, HuginSurveyAnalysisShadingCrosshairAndExport) {
   ASSERT_EQ(table->rowCount(), static_cast<int>(used));
   const auto first = std::find_if(r.segments.begin(), r.segments.end(), [](const auto& seg) { return seg.used; });
   EXPECT_NEAR(table->item(0, 4)->text().section(' ', 0, 0).toDouble(), first->roll_deg, 0.005 + 1e-9);
-  EXPECT_NEAR(table->item(0, 4)->text().section(QChar(0x00B1), 1).toDouble(), first->roll_ci95_deg, 0.005 + 1e-9);
+  // The interval at the column's decimals, at least 0.01 (never "±0.00");
+  // the tooltip has it to the digits it needs.
+  const double shown_ci = table->item(0, 4)->text().section(QChar(0x00B1), 1).toDouble();
+  EXPECT_NEAR(shown_ci, std::max(first->roll_ci95_deg, 0.01), 0.005 + 1e-9);
+  EXPECT_NE(table->item(0, 4)->toolTip().indexOf("(95 %)"), -1);
   const QImage page = shot(*wiz, "21d_deviation_plots_analysis");
+  // Every cell's text fits its column on the page as shown (no "…": an
+  // elided cell loses its interval).
+  for (int row = 0; row < table->rowCount(); ++row)
+    for (int c = 0; c < table->columnCount(); ++c) {
+      const QString text = table->item(row, c)->text();
+      EXPECT_LE(table->fontMetrics().horizontalAdvance(text) + 8, table->columnWidth(c))
+          << "row " << row << " column " << c << ": " << text.toStdString();
+    }
   // The shading is drawn: its translucent green (70, 170, 90, alpha 45) over the white plot area.
   const auto blend = [](int c) { return static_cast<int>(std::lround(255 + (c - 255) * 45.0 / 255.0)); };
   EXPECT_GT(auv::testing::colourFraction(page, QColor(blend(70), blend(170), blend(90)), 6), 0.05);

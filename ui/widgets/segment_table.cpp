@@ -12,10 +12,24 @@
 namespace auv::ui {
 namespace {
 
+// The cell: mean and its 95 % interval at the column's decimals, the
+// interval at least one unit of the last digit (a 0.001 deg interval shows
+// as "±0.01", never "±0.00"), so that it fits the narrow side panel; more
+// digits were elided to "+2.786 …" and lost the interval. The tooltip has
+// the digits.
 QString cellText(double mean, double ci, int decimals) {
   if (!std::isfinite(mean)) return QStringLiteral("—");
-  decimals = EstimateText::decimalsFor(ci, decimals);  // a small interval is not "±0.00"
-  return std::isfinite(ci) ? QStringLiteral("%1 ±%2").arg(signedFixed(mean, decimals), fixed(ci, decimals))
+  if (!std::isfinite(ci)) return signedFixed(mean, decimals);
+  const double scale = std::pow(10.0, decimals);
+  const double ci_up = std::max(1.0, std::round(ci * scale)) / scale;
+  return QStringLiteral("%1 ±%2").arg(signedFixed(mean, decimals), fixed(ci_up, decimals));
+}
+
+// The tooltip: as many decimals as the interval needs.
+QString preciseText(double mean, double ci, int decimals) {
+  if (!std::isfinite(mean)) return {};
+  decimals = EstimateText::decimalsFor(ci, decimals);
+  return std::isfinite(ci) ? QStringLiteral("%1 ± %2 (95 %)").arg(signedFixed(mean, decimals), fixed(ci, decimals))
                            : signedFixed(mean, decimals);
 }
 
@@ -66,8 +80,13 @@ void SegmentTable::show(const analysis::AnalysisReport* report, bool glider) {
         g ? cellText(s.depth_m, NAN, 1) : auv_glide ? tr("dive/climb") : cellText(s.depth_error_m, s.depth_error_ci95_m, 2),
         g || auv_glide ? cellText(s.pitch_deg, NAN, 1) : cellText(s.pitch_error_deg, s.pitch_error_ci95_deg, 2),
         cellText(s.roll_deg, s.roll_ci95_deg, 2)};
+    const QString tips[5] = {
+        {}, {}, g || auv_glide ? QString() : preciseText(s.depth_error_m, s.depth_error_ci95_m, 2),
+        g || auv_glide ? QString() : preciseText(s.pitch_error_deg, s.pitch_error_ci95_deg, 2),
+        preciseText(s.roll_deg, s.roll_ci95_deg, 2)};
     for (int c = 0; c < 5; ++c) {
       auto* item = new QTableWidgetItem(cells[c]);
+      if (!tips[c].isEmpty()) item->setToolTip(tips[c]);
       item->setTextAlignment(c == 0 ? Qt::AlignCenter : Qt::AlignRight | Qt::AlignVCenter);
       table_->setItem(r, c, item);
     }
