@@ -109,7 +109,7 @@ int runModelCheck(const ModelCheckOpts& o) {
       logArgumentLabel(o.log), [&] { return discrepancy::makeCheckModel(log, v, app::resourceDir(), setup); });
   const discrepancy::ModelCheckResult mc =
       aboutFile(logArgumentLabel(o.log), [&] { return discrepancy::runModelCheck(*model, mo); });
-  discrepancy::mergeIntoAnalysisJson(j, mc);
+  discrepancy::mergeIntoAnalysisJson(j, mc, o.accept);
   if (!readReport.clean()) j["model_check"]["import"] = readReport.summary();
   const auto* glider = dynamic_cast<const discrepancy::GliderCheckModel*>(model.get());
   if (glider && std::isfinite(r.target_density_kgm3)) {
@@ -164,6 +164,9 @@ int runModelCheck(const ModelCheckOpts& o) {
   if (o.json != "-") {
     if (!readReport.clean()) std::cout << readReport.summary() << "\n";
     std::cout << analysis::toText(r) << "\n" << discrepancy::toText(mc);
+    if (j["model_check"].contains("estimate_source") && j["net_buoyancy_kg"].is_number())
+      std::printf("Ballast state for the plan: net buoyancy %+.3f +- %.3f kg - %s\n", j["net_buoyancy_kg"].get<double>(),
+                  j.value("net_buoyancy_sigma_kg", 0.0), j["model_check"]["estimate_source"].get<std::string>().c_str());
     if (j.contains("model_check") && j["model_check"].contains("glider_ballast")) {
       const auto& g = j["model_check"]["glider_ballast"];
       std::printf("Glider, jointly with the accepted terms: add %+.0f +- %.0f g for neutral (pump at zero) at the target\n",

@@ -1,5 +1,7 @@
 #include "discrepancy/model_check_report.h"
 
+#include "discrepancy/plan_estimate.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -134,7 +136,7 @@ nlohmann::json toJson(const ModelCheckResult& r) {
   return j;
 }
 
-void mergeIntoAnalysisJson(nlohmann::json& a, const ModelCheckResult& r) {
+void mergeIntoAnalysisJson(nlohmann::json& a, const ModelCheckResult& r, bool terms_accepted) {
   const nlohmann::json m = toJson(r);
   nlohmann::json mc = m["model_check"];
   mc["analysis_estimate"] = {{"net_buoyancy_kg", a.value("net_buoyancy_kg", nlohmann::json())},
@@ -150,7 +152,34 @@ void mergeIntoAnalysisJson(nlohmann::json& a, const ModelCheckResult& r) {
   const bool joint = a.contains("details") && a["details"].contains("auv_estimate") &&
                      a["details"]["auv_estimate"].value("history_segments_used", 0) > 0 &&
                      a.value("net_buoyancy_kg", nlohmann::json()).is_number();
-  if (joint) {
+  const bool auv = a.value("vehicle_kind", std::string()) == "auv";
+  const bool analysis_knows = a.value("net_buoyancy_kg", nlohmann::json()).is_number();
+  const bool any_term = terms_accepted && !r.missing_physics.empty();
+  if (!joint && auv && analysis_knows) {
+    mc["check_estimate"] = {{"net_buoyancy_kg", m["net_buoyancy_kg"]}, {"net_buoyancy_sigma_kg", m["net_buoyancy_sigma_kg"]},
+                            {"cg_offset_mm", m.value("cg_offset_mm", nlohmann::json())}};
+    if (!any_term) {
+      mc["estimate_source"] = "analysis (no model-check term accepted)";
+    } else if (m["net_buoyancy_kg"].is_number() && m["net_buoyancy_sigma_kg"].is_number() &&
+               m["net_buoyancy_sigma_kg"].get<double>() > 0.0) {
+      // planEstimate's rule: the check's centre, the sigma widened by the
+      // disagreement the accepted terms did not explain.
+      const auto widen = [](nlohmann::json& value, nlohmann::json& sigma, const nlohmann::json& cv, const nlohmann::json& cs) {
+        if (!cv.is_number() || !cs.is_number() || !(cs.get<double>() > 0.0)) return;
+        if (value.is_number() && sigma.is_number())
+          sigma = adoptedSigma(value.get<double>(), sigma.get<double>(), cv.get<double>(), cs.get<double>());
+        else
+          sigma = cs;
+        value = cv;
+      };
+      widen(a["net_buoyancy_kg"], a["net_buoyancy_sigma_kg"], m["net_buoyancy_kg"], m["net_buoyancy_sigma_kg"]);
+      if (m.contains("cg_offset_mm") && a.contains("cg_offset_mm") && a["cg_offset_mm"].is_object() &&
+          a.contains("cg_offset_sigma_mm") && a["cg_offset_sigma_mm"].is_object())
+        widen(a["cg_offset_mm"]["x"], a["cg_offset_sigma_mm"]["x"], m["cg_offset_mm"].value("x", nlohmann::json()),
+              m["cg_offset_sigma_mm"].value("x", nlohmann::json()));
+      mc["estimate_source"] = "model check with the accepted terms (sigma widened by its difference from the analysis)";
+    }
+  } else if (joint) {
     mc["check_estimate"] = {{"net_buoyancy_kg", m["net_buoyancy_kg"]}, {"net_buoyancy_sigma_kg", m["net_buoyancy_sigma_kg"]},
                             {"cg_offset_mm", m.value("cg_offset_mm", nlohmann::json())}};
     mc["estimate_source"] = "analysis calibrated with the configuration's earlier mission";

@@ -21,7 +21,13 @@ nlohmann::json toJson(const ModelCheckResult& r);
 
 // Adds the contract fields above to an analysis report (analysis::toJson),
 // keeping the analysis's own estimates under model_check.analysis_estimate.
-void mergeIntoAnalysisJson(nlohmann::json& analysis, const ModelCheckResult& r);
+// An AUV's ballast state follows planEstimate (plan_estimate.h): the
+// check's fit replaces the analysis's only where the analysis did not
+// identify it, or when the terms were accepted (`terms_accepted`, e.g.
+// --accept), then with the widened sigma; otherwise the analysis's stands
+// and the check's is kept as model_check.check_estimate. A glider's is the
+// check's (its flight-model fit is the glider answer).
+void mergeIntoAnalysisJson(nlohmann::json& analysis, const ModelCheckResult& r, bool terms_accepted = false);
 
 std::string toText(const ModelCheckResult& r);
 

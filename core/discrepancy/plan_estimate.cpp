@@ -1,5 +1,6 @@
 #include "discrepancy/plan_estimate.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace auv::discrepancy {
@@ -8,6 +9,10 @@ namespace {
 bool usable(double value, double sigma) { return std::isfinite(value) && std::isfinite(sigma) && sigma > 0.0; }
 
 }  // namespace
+
+double adoptedSigma(double analysis_value, double analysis_sigma, double check_value, double check_sigma) {
+  return std::hypot(std::max(check_sigma, analysis_sigma), check_value - analysis_value);
+}
 
 PlanEstimate planEstimate(const analysis::AnalysisReport& analysis, const ModelCheckResult* check,
                           const std::vector<std::string>& accepted_terms) {
@@ -18,10 +23,13 @@ PlanEstimate planEstimate(const analysis::AnalysisReport& analysis, const ModelC
     for (const auto& id : accepted_terms) any = any || m.id == id;
   const bool replay_only = !any && !analysis.net_buoyancy_kg.known;
   if ((!any && !replay_only) || !usable(check->net_buoyancy_kg, check->net_buoyancy_sigma_kg)) return out;
-  analysis::EstimatedValue& net = out.report.net_buoyancy_kg;
-  net = {true, check->net_buoyancy_kg, check->net_buoyancy_sigma_kg, ""};
+  const auto adopt = [](analysis::EstimatedValue& into, double value, double sigma) {
+    const double s = into.known && usable(into.value, into.sigma) ? adoptedSigma(into.value, into.sigma, value, sigma) : sigma;
+    into = {true, value, s, ""};
+  };
+  adopt(out.report.net_buoyancy_kg, check->net_buoyancy_kg, check->net_buoyancy_sigma_kg);
   if (check->has_cg && usable(check->cg_x_mm, check->cg_x_sigma_mm))
-    out.report.cg_x_mm = {true, check->cg_x_mm, check->cg_x_sigma_mm, ""};
+    adopt(out.report.cg_x_mm, check->cg_x_mm, check->cg_x_sigma_mm);
   out.source = replay_only ? EstimateSource::kModelCheckReplay : EstimateSource::kModelCheck;
   return out;
 }

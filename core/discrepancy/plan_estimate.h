@@ -32,7 +32,21 @@ struct PlanEstimate {
 // Without accepted terms, where the analysis did not identify the net
 // buoyancy (e.g. Delphin2's tunnel thrusters ran in every steady segment)
 // and the check's replay did: the check's fit (kModelCheckReplay).
+//
+// An adopted value keeps the check's centre but not its bare sigma: the
+// check's sigma assumes its model structure is right, the analysis's
+// calibrated one has measured coverage (bench/identification_bench). So
+// sigma = hypot(max(sigma_check, sigma_analysis), |check - analysis|): the
+// analysis's sigma is the floor, and a disagreement the accepted terms do
+// not explain is model error of one of the two, which the plan's margin
+// must cover. Measured: on HUGIN logs with no concealed effect the check
+// named a false depth offset and its fit was 9-10 sigma off the truth
+// (net 6.46 +- 0.11 kg against 5.29; CG x 44 sigma), which a plan with its
+// bare sigma would have trusted (docs/decisions/model-check-calibration.md).
 PlanEstimate planEstimate(const analysis::AnalysisReport& analysis, const ModelCheckResult* check,
                           const std::vector<std::string>& accepted_terms);
+
+// The rule above for one quantity: the check's value, its sigma widened.
+double adoptedSigma(double analysis_value, double analysis_sigma, double check_value, double check_sigma);
 
 }  // namespace auv::discrepancy

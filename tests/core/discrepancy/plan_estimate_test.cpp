@@ -2,6 +2,9 @@
 // (issue 14 item 5): the rules, on hand-made reports.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "discrepancy/model_check_report.h"
 #include "discrepancy/plan_estimate.h"
 
 namespace auv::discrepancy {
@@ -31,15 +34,26 @@ ModelCheckResult check() {
   return r;
 }
 
+// The check's centre; its sigma widened by what separates it from the
+// analysis (2.88 against 2.29 +- 0.04: 0.59 kg the accepted term did not
+// reconcile), so the plan's margin covers both estimators.
 TEST(PlanEstimate, AcceptedTermsAdoptTheChecksNetBuoyancyAndCgXButNotCgY) {
   const ModelCheckResult c = check();
   const PlanEstimate e = planEstimate(analysisReport(), &c, {"quadratic_pitch_damping"});
   EXPECT_EQ(e.source, EstimateSource::kModelCheck);
   EXPECT_DOUBLE_EQ(e.report.net_buoyancy_kg.value, 2.88);
-  EXPECT_DOUBLE_EQ(e.report.net_buoyancy_kg.sigma, 0.07);
+  EXPECT_NEAR(e.report.net_buoyancy_kg.sigma, std::hypot(0.07, 2.88 - 2.29), 1e-12);
   EXPECT_DOUBLE_EQ(e.report.cg_x_mm.value, 0.07);
-  EXPECT_DOUBLE_EQ(e.report.cg_x_mm.sigma, 0.06);
+  EXPECT_NEAR(e.report.cg_x_mm.sigma, std::hypot(0.1, 0.07 - 0.4), 1e-12);  // the analysis's 0.1 mm is the floor
   EXPECT_FALSE(e.report.cg_y_mm.known);  // still not known: no BG
+}
+
+// Agreeing estimators: the larger sigma (the check's own assumes its model
+// structure), not the smaller.
+TEST(PlanEstimate, AnAgreeingCheckKeepsAtLeastTheAnalysissSigma) {
+  EXPECT_NEAR(adoptedSigma(2.29, 0.04, 2.29, 0.01), 0.04, 1e-12);
+  EXPECT_NEAR(adoptedSigma(2.29, 0.04, 2.29, 0.07), 0.07, 1e-12);
+  EXPECT_NEAR(adoptedSigma(5.27, 0.158, 6.463, 0.113), std::hypot(0.158, 1.193), 1e-12);
 }
 
 TEST(PlanEstimate, WithoutAnAcceptedTermOfThisCheckTheAnalysisStands) {
@@ -87,6 +101,33 @@ TEST(PlanEstimate, WhereTheAnalysisCannotTellTheChecksReplayFitIsUsed) {
   EXPECT_EQ(e.source, EstimateSource::kAnalysis);
   EXPECT_FALSE(e.report.net_buoyancy_kg.known);
   EXPECT_EQ(planEstimate(a, nullptr, {}).source, EstimateSource::kAnalysis);
+}
+
+// The CLI's report (mergeIntoAnalysisJson) follows the same rule: an AUV's
+// analysis stands until terms are accepted (--accept); then the check's
+// centre with the widened sigma, the check's own fit kept beside it.
+TEST(PlanEstimate, TheCliReportFollowsTheSameRule) {
+  ModelCheckResult c = check();
+  c.net_buoyancy_kg = 6.463;
+  c.net_buoyancy_sigma_kg = 0.113;
+  const nlohmann::json base = {{"vehicle_kind", "auv"},
+                               {"net_buoyancy_kg", 5.273},
+                               {"net_buoyancy_sigma_kg", 0.158},
+                               {"cg_offset_mm", {{"x", -4.9}, {"y", nullptr}}},
+                               {"cg_offset_sigma_mm", {{"x", 0.2}, {"y", nullptr}}}};
+  nlohmann::json a = base;
+  mergeIntoAnalysisJson(a, c, false);
+  EXPECT_DOUBLE_EQ(a["net_buoyancy_kg"].get<double>(), 5.273);
+  EXPECT_DOUBLE_EQ(a["net_buoyancy_sigma_kg"].get<double>(), 0.158);
+  EXPECT_DOUBLE_EQ(a["model_check"]["check_estimate"]["net_buoyancy_kg"].get<double>(), 6.463);
+  EXPECT_EQ(a["model_check"]["estimate_source"], "analysis (no model-check term accepted)");
+  a = base;
+  mergeIntoAnalysisJson(a, c, true);
+  EXPECT_DOUBLE_EQ(a["net_buoyancy_kg"].get<double>(), 6.463);
+  EXPECT_NEAR(a["net_buoyancy_sigma_kg"].get<double>(), std::hypot(0.158, 6.463 - 5.273), 1e-9);
+  EXPECT_DOUBLE_EQ(a["cg_offset_mm"]["x"].get<double>(), 0.07);
+  EXPECT_NEAR(a["cg_offset_sigma_mm"]["x"].get<double>(), std::hypot(0.2, 0.07 + 4.9), 1e-9);
+  EXPECT_DOUBLE_EQ(a["model_check"]["analysis_estimate"]["net_buoyancy_kg"].get<double>(), 5.273);
 }
 
 }  // namespace
