@@ -62,7 +62,7 @@ double timeAnalysis(const identification::Harness& h, double duration_s, double 
   sim::Scenario sc = m.scenario;
   sc.extra_masses = sim::installedWeights(h.profile(), std::vector<double>{7.2, 7.2, 25.2, 25.2});
   const sim::SimTrace tr = sim::simulate(v.model, v.autopilot, m.water(), sc, m.options);
-  MissionLog log = sim::toMissionLog(tr, {"hugin1000", "plan", "timing", 99, 0, {7.2, 7.2, 25.2, 25.2}, {}});
+  MissionLog log = sim::toMissionLog(tr, {"hugin1000", "plan", "timing", 99, 0, {7.2, 7.2, 25.2, 25.2}, {sim::latitudeMetadata(m.latitude_deg)}});
   sim::applyDropouts(log, 99);
   analysis::AnalysisOptions a;
   a.installed_kg = {7.2, 7.2, 25.2, 25.2};

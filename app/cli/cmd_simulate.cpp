@@ -87,7 +87,7 @@ int runGliderPlan(const SimulateOpts& o, const sim::MissionPlan& plan, const Veh
   sim::GliderScenario sc = sim::resolveGliderScenario(plan, v);
   if (!o.ballast_error.empty()) sc.ballast_error = ballastError(o);
   const SimTrace tr = sim::simulateGlider(g, plan.water, sc, plan.options);
-  sim::SimLogInfo info{v.id, "plan", o.plan, plan.options.seed, 0, plan.installed_kg, {}};
+  sim::SimLogInfo info{v.id, "plan", o.plan, plan.options.seed, 0, plan.installed_kg, {sim::latitudeMetadata(plan.water.latitudeDeg())}};
   sim::writeSimulatedLog(tr, info, o.out);
   printSummary(tr, o.out);
   return 0;
@@ -124,7 +124,7 @@ int runPlan(const SimulateOpts& o) {
   sim::DepthAutopilotConfig ap = sv.autopilot;
   if (plan.anti_windup) ap.anti_windup = *plan.anti_windup;
   const SimTrace tr = sim::simulate(sv.model, ap, plan.water, sc, plan.options);
-  sim::SimLogInfo info{v.id, "plan", o.plan, plan.options.seed, sv.model.thruster_count, plan.installed_kg, {}};
+  sim::SimLogInfo info{v.id, "plan", o.plan, plan.options.seed, sv.model.thruster_count, plan.installed_kg, {sim::latitudeMetadata(plan.water.latitudeDeg())}};
   sim::writeSimulatedLog(tr, info, o.out);
   printSummary(tr, o.out);
   return 0;

@@ -29,6 +29,8 @@ void addChannel(MissionLog& log, const char* name, const char* unit, const std::
 
 }  // namespace
 
+MetadataEntry latitudeMetadata(double latitude_deg) { return {"latitude", formatNumber(latitude_deg)}; }
+
 MissionLog toMissionLog(const SimTrace& tr, const SimLogInfo& info) {
   MissionLog log;
   log.metadata.push_back({"vehicle", info.vehicle});

@@ -39,6 +39,12 @@ struct SimLogInfo {
 
 MissionLog toMissionLog(const SimTrace& trace, const SimLogInfo& info);
 
+// Where the log was flown, for SimLogInfo::extra: "latitude" in the header, so
+// the analysis converts pressure to depth with the gravity the simulator's
+// water column used (without it, 45 deg: a 60 deg log's depth and pressure
+// then disagree by 0.13 %, which the model check read as a depth offset).
+MetadataEntry latitudeMetadata(double latitude_deg);
+
 // toMissionLog + writeInterchangeCsv. Throws InputError if it cannot write.
 void writeSimulatedLog(const SimTrace& trace, const SimLogInfo& info, const std::filesystem::path& path);
 

@@ -35,7 +35,7 @@ std::vector<double> levels(std::mt19937_64& rng, int count, double lo, double hi
 }  // namespace
 
 WaterColumn SurveyMission::water() const {
-  WaterColumn w = WaterColumn::fromCast(cast, 400.0, 1.0, 60.0);
+  WaterColumn w = WaterColumn::fromCast(cast, 400.0, 1.0, latitude_deg);
   w.setInternalWave(internal_wave_amplitude_m, internal_wave_period_s);
   return w;
 }

@@ -30,6 +30,7 @@ struct SurveyMission {
   Scenario scenario;  // legs and initial state; the caller adds installed weights and ballast error
   std::vector<CtdPoint> cast;
   double internal_wave_amplitude_m = 0.0, internal_wave_period_s = 0.0;
+  double latitude_deg = 60.0;  // a Norwegian fjord or shelf
   SimOptions options;
   std::vector<double> rpms, depths_m;
   std::uint64_t seed = 0;

@@ -45,6 +45,7 @@ WaterColumn WaterColumn::fromCast(std::span<const CtdPoint> cast, double max_dep
   };
   WaterColumn w;
   w.step_m_ = step_m;
+  w.latitude_deg_ = latitude_deg;
   const auto n = static_cast<std::size_t>(std::ceil(max_depth_m / step_m)) + 1;
   w.table_.reserve(n + 1);
   for (std::size_t i = 0; i <= n; ++i) {

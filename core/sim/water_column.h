@@ -42,6 +42,9 @@ class WaterColumn {
     wave_omega_ = period_s > 0.0 ? 2.0 * 3.14159265358979323846 / period_s : 0.0;
     wave_phase_ = phase_rad;
   }
+  // The latitude the cast's pressure was computed for (UNESCO gravity): a log
+  // flown in it says so, or its depth and pressure disagree by up to 0.5 %.
+  double latitudeDeg() const { return latitude_deg_; }
   bool hasInternalWave() const { return wave_amplitude_m_ != 0.0 && wave_omega_ > 0.0; }
   // The water at a depth at time t (s) of the run.
   WaterSample at(double depth_m, double t_s) const {
@@ -75,6 +78,7 @@ class WaterColumn {
  private:
   std::vector<WaterSample> table_;
   double step_m_ = 1.0;
+  double latitude_deg_ = 45.0;
   double uniform_dbar_per_m_ = 0.0;
   double wave_amplitude_m_ = 0.0, wave_omega_ = 0.0, wave_phase_ = 0.0;
 };

@@ -51,7 +51,7 @@ Flown fly(const sim::VehicleModel& truth, const sim::DepthAutopilotConfig& ap, c
   const sim::WaterColumn water = m.water();
   const sim::SimTrace tr = sim::simulate(truth, ap, water, sc, opt);
   Flown f;
-  f.log = sim::toMissionLog(tr, {"hugin1000", "plan", "identification harness", noise_seed, 0, installed_kg, {}});
+  f.log = sim::toMissionLog(tr, {"hugin1000", "plan", "identification harness", noise_seed, 0, installed_kg, {sim::latitudeMetadata(m.latitude_deg)}});
   sim::applyDropouts(f.log, noise_seed);
   f.mass_kg = tr.truth.mass_kg;
   f.cg_x_m = tr.truth.cg_x_m;

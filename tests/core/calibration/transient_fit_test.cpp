@@ -16,7 +16,9 @@
 #include "analysis/auv_steady_model.h"
 #include "analysis/auv_transient_fit.h"
 #include "analysis/mission_analysis.h"
+#include "analysis/profile_constants.h"
 #include "common/units.h"
+#include "seawater/depth_pressure.h"
 #include "identification_harness.h"
 #include "sim/model_loader.h"
 #include "sim/sim_log.h"
@@ -54,7 +56,7 @@ Case flyTruth(const VehicleProfile& profile, std::uint64_t seed) {
   // replay misses them by up to a second (chi2 30-40 at the truth).
   opt.trace_interval_s = 0.1;
   const sim::SimTrace tr = sim::simulate(c.truth_model, nominal.autopilot, m.water(), sc, opt);
-  c.log = sim::toMissionLog(tr, {"hugin1000", "plan", "transient test", seed, 0, kInstalled, {}});
+  c.log = sim::toMissionLog(tr, {"hugin1000", "plan", "transient test", seed, 0, kInstalled, {sim::latitudeMetadata(m.latitude_deg)}});
   sim::applyDropouts(c.log, seed);
   c.mass_kg = tr.truth.mass_kg;
   return c;
@@ -194,6 +196,32 @@ TEST(TransientFit, IsSkippedWhenTheHistoryCalibrates) {
   AnalysisOptions alone = first;
   alone.use_transients = true;
   EXPECT_TRUE(analyzeMission(c.log, profile, alone).details.contains("transient_windows"));
+}
+
+// A simulated survey says where it flew: its water column's pressure was
+// computed for 60 deg N, and without "latitude" in the header the analysis
+// (45 deg) read depth and pressure 0.13 % apart, which the model check then
+// named a -0.08 m depth-sensor offset on every harness log.
+TEST(TransientFit, SimulatedLogsCarryTheirLatitude) {
+  const identification::Harness h;
+  const Case c = flyTruth(h.profile(), 1103);
+  const std::optional<double> lat = latitudeFromMetadata(c.log);
+  ASSERT_TRUE(lat.has_value());
+  EXPECT_DOUBLE_EQ(*lat, 60.0);
+  const LogChannel* z = c.log.find("depth");
+  const LogChannel* p = c.log.find("pressure");
+  ASSERT_TRUE(z && p);
+  double with = 0.0, without = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < z->values.size(); ++i) {
+    if (!std::isfinite(z->values[i]) || !std::isfinite(p->values[i]) || z->values[i] < 40.0) continue;
+    with += z->values[i] - seawater::depthFromPressure(p->values[i], *lat);
+    without += z->values[i] - seawater::depthFromPressure(p->values[i], 45.0);
+    ++n;
+  }
+  ASSERT_GT(n, 1000);
+  EXPECT_LT(std::abs(with / n), 0.01);
+  EXPECT_GT(std::abs(without / n), 0.05);
 }
 
 }  // namespace

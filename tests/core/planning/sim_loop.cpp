@@ -85,7 +85,7 @@ SimMission SimHarness::fly(const SimLoopCase& c, const std::vector<double>& inst
   sim::SimOptions opt = plan_.options;
   opt.seed = seed;
   const sim::SimTrace tr = sim::simulate(sim_.model, sim_.autopilot, water, sc, opt);
-  const MissionLog log = sim::toMissionLog(tr, {"hugin1000", "plan", "closed loop", seed, 0, installed, {}});
+  const MissionLog log = sim::toMissionLog(tr, {"hugin1000", "plan", "closed loop", seed, 0, installed, {sim::latitudeMetadata(water.latitudeDeg())}});
   analysis::AnalysisOptions a;
   a.log_name = "closed-loop";
   a.installed_kg = installed;
