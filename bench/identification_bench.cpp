@@ -10,7 +10,10 @@
 // (--log-interval: row interval of the flown logs, default 1 s; --transients:
 // the analysis also fits the transients, auv_transient_fit.h; --fly-manoeuvre:
 // the second mission also flies the calibration manoeuvre the first plan
-// asked for, details.calibration_manoeuvre.flight)
+// asked for, details.calibration_manoeuvre.flight; --model-check N: the
+// model check of the first N logs, which conceal no effect: the terms it
+// names there are false, and how often its own ballast fit and the one the
+// plan adopts with all its terms accepted (planEstimate) cover the truth)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,6 +24,9 @@
 #include <vector>
 
 #include "analysis/mission_analysis.h"
+#include "discrepancy/model_check.h"
+#include "discrepancy/plan_estimate.h"
+#include "discrepancy/vehicle_check.h"
 #include "identification_harness.h"
 #include "sim/sim_log.h"
 #include "sim/simulator.h"
@@ -81,12 +87,58 @@ double timeAnalysis(const identification::Harness& h, double duration_s, double 
 
 }  // namespace
 
+// The model check on logs that conceal no effect (issue 11 item 6): every
+// term it names is false; its own ballast fit, and the one the plan adopts
+// with all its terms accepted (discrepancy::planEstimate), against the truth.
+struct ModelCheckTally {
+  int logs = 0, with_terms = 0, check_cov = 0, plan_net_cov = 0, plan_x_cov = 0, plan_known = 0, x_known = 0;
+  std::map<std::string, int> terms;
+  std::vector<double> check_z, plan_z;  // |error| / sigma of net buoyancy
+  void add(const MissionLog& log, const VehicleProfile& v, const analysis::AnalysisReport& rep, double net_truth,
+           double x_truth, bool verbose) {
+    const discrepancy::ModelCheckResult r =
+        discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, v, AUV_RESOURCE_DIR));
+    ++logs;
+    std::vector<std::string> ids;
+    for (const auto& m : r.missing_physics) ids.push_back(m.id), ++terms[m.id];
+    with_terms += !ids.empty();
+    if (std::isfinite(r.net_buoyancy_kg) && r.net_buoyancy_sigma_kg > 0) {
+      check_z.push_back(std::abs(r.net_buoyancy_kg - net_truth) / r.net_buoyancy_sigma_kg);
+      check_cov += check_z.back() <= 2.0;
+    }
+    const discrepancy::PlanEstimate e = discrepancy::planEstimate(rep, &r, ids);
+    if (e.report.net_buoyancy_kg.known && e.report.net_buoyancy_kg.sigma > 0) {
+      ++plan_known;
+      plan_z.push_back(std::abs(e.report.net_buoyancy_kg.value - net_truth) / e.report.net_buoyancy_kg.sigma);
+      plan_net_cov += plan_z.back() <= 2.0;
+    }
+    if (e.report.cg_x_mm.known && e.report.cg_x_mm.sigma > 0) {
+      ++x_known;
+      plan_x_cov += std::abs(e.report.cg_x_mm.value - x_truth) <= 2.0 * e.report.cg_x_mm.sigma;
+    }
+    if (verbose)
+      std::printf("  model check: %zu term(s)%s, check's net %+.3f +- %.3f kg, plan's %+.3f +- %.3f kg, truth %+.3f kg\n",
+                  ids.size(), ids.empty() ? "" : (" (" + ids.front() + (ids.size() > 1 ? ", ..." : "") + ")").c_str(),
+                  r.net_buoyancy_kg, r.net_buoyancy_sigma_kg, e.report.net_buoyancy_kg.value, e.report.net_buoyancy_kg.sigma,
+                  net_truth);
+  }
+  void print() const {
+    std::printf("  model check on %d logs with no concealed effect: terms named on %d (false):", logs, with_terms);
+    for (const auto& [id, n] : terms) std::printf(" %s %d,", id.c_str(), n);
+    std::printf("\n    the check's own ballast fit: net within 2 sigma %d of %zu (|error|/sigma median %.1f); "
+                "the plan's with every term accepted: net %d of %d (median %.2f), CG x %d of %d\n",
+                check_cov, check_z.size(), quantile(check_z, 0.5), plan_net_cov, plan_known, quantile(plan_z, 0.5),
+                plan_x_cov, x_known);
+  }
+};
+
 int main(int argc, char** argv) {
   int truths = 50;
   std::uint64_t seed = 1100;
   bool loop = true, timing = true, verbose = false, fly_manoeuvre = false;
   double log_interval_s = 1.0;
   bool transients = false;
+  int model_checks = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--truths" && i + 1 < argc) truths = std::atoi(argv[++i]);
@@ -97,6 +149,7 @@ int main(int argc, char** argv) {
     else if (a == "--fly-manoeuvre") fly_manoeuvre = true;
     else if (a == "--log-interval" && i + 1 < argc) log_interval_s = std::atof(argv[++i]);
     else if (a == "--transients") transients = true;
+    else if (a == "--model-check" && i + 1 < argc) model_checks = std::atoi(argv[++i]);
     else if (a == "--truth-doc" && i + 2 < argc) {  // --truth-doc SEED FILE: the truth's hydrodynamics companion
       const nlohmann::json nominal = JsonReader::parseFile(std::string(AUV_RESOURCE_DIR) + "/sim/hugin1000_hydrodynamics.json");
       std::ofstream(argv[i + 2]) << sim::truthHydrodynamicsDoc(nominal, sim::drawTruth(std::strtoull(argv[i + 1], nullptr, 10))).dump(1) << "\n";
@@ -113,7 +166,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     else {
-      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre]\n");
+      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre] [--model-check N]\n");
       return 2;
     }
   }
@@ -128,6 +181,11 @@ int main(int argc, char** argv) {
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;
   int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0, twice = 0, asked = 0, flown = 0;
   std::map<std::string, int> identified;
+  ModelCheckTally mc;
+  if (model_checks > 0)
+    h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double x_truth) {
+      if (mc.logs < model_checks) mc.add(log, h.profile(), rep, net_truth, x_truth, verbose);
+    };
   for (int i = 0; i < truths; ++i) {
     const identification::CaseResult r = h.run(seed + static_cast<std::uint64_t>(i), loop);
     if (verbose)
@@ -227,6 +285,7 @@ int main(int argc, char** argv) {
   if (loop)
     std::printf("  calibration manoeuvre: asked by %d first plans, flown in %d second missions%s\n", asked, flown,
                 fly_manoeuvre ? "" : " (not flown without --fly-manoeuvre)");
+  if (model_checks > 0) mc.print();
   if (timing) {
     std::printf("  analysis + calibration, 3 h at 1 Hz: %.3f s\n", timeAnalysis(h, 3 * 3600.0, 1.0));
     std::printf("  analysis + calibration, 24 h at 10 Hz: %.3f s\n", timeAnalysis(h, 24 * 3600.0, 0.1));

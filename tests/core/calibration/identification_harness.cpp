@@ -182,6 +182,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   const double Vref = profile_.hull.volumeAt(rep.temperature_degC.mean, rep.pressure_dbar.mean);
   const double net_truth = rep.density_kgm3.mean * Vref - f.mass_kg;
   r.known = rep.net_buoyancy_kg.known && rep.cg_x_mm.known;
+  if (on_first_log) on_first_log(f.log, rep, net_truth, units::mToMm(f.cg_x_m));
   if (r.known) {
     r.net_err_kg = rep.net_buoyancy_kg.value - net_truth;
     r.net_sigma_kg = rep.net_buoyancy_kg.sigma;

@@ -4,13 +4,16 @@
 // the analysis sees only the nominal profile and the log, and its estimate,
 // sigma and one-move plan are judged against what the simulator flew.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/analysis_report.h"
 #include "analysis/calibration_parameter.h"
+#include "missionlog/mission_log.h"
 #include "sim/mission_plan.h"
 #include "sim/truth_draw.h"
 #include "sim/survey_mission.h"
@@ -77,6 +80,10 @@ class Harness {
   // manoeuvre (1 Hz) biased it by about 0.1 kg on some truths
   // (docs/decisions/analysis-calibration.md).
   bool fly_manoeuvre = false;
+  // Called with the first log, its analysis and the truth at the report's
+  // reference water (net kg, CG x mm): the bench runs the model check there
+  // (the harness itself stays free of it).
+  std::function<void(const MissionLog&, const analysis::AnalysisReport&, double, double)> on_first_log;
 
  private:
   VehicleProfile profile_;      // nominal profile with its companion hydrodynamics: all the analysis gets
