@@ -3270,6 +3270,11 @@
 <context>
     <name>auv::ui::ModelCheckPage</name>
     <message>
+        <location filename="../../ui/pages/model_check_page.cpp" line="296"/>
+        <source>The check&apos;s fit and the analysis (%1) differ by %2 kg: the uncertainty includes that difference, so the plan&apos;s safety margin covers both.</source>
+        <translation>Sjekkens tilpasning og analysen (%1) skiller seg med %2 kg: usikkerheten tar med den forskjellen, så planens sikkerhetsmargin dekker begge.</translation>
+    </message>
+    <message>
         <location filename="../../ui/pages/model_check_page.cpp" line="50"/>
         <source>Model check: what the model leaves out</source>
         <translation>Modellsjekk: hva modellen utelater</translation>

@@ -13,6 +13,7 @@
 #include <QListWidget>
 #include <QRadioButton>
 #include <QTableWidget>
+#include <cmath>
 #include <functional>
 
 #include "history/store.h"
@@ -23,6 +24,7 @@
 #include "ui_fixture.h"
 #include "wizard/demo_state.h"
 #include "wizard/operator_wizard.h"
+#include "wizard/pre_mission_inputs.h"
 
 using namespace auv;
 using namespace auv::ui;
@@ -99,6 +101,16 @@ TEST_F(ThesisSequence, FirstThenPostThenPreMissionOnTheBundledData) {
     ASSERT_EQ(wiz.currentId(), OperatorWizard::kModelCheck);
     auto* check = qobject_cast<ModelCheckPage*>(wiz.currentPage());
     waitWhile([check] { return check->job().running(); });
+    // The check's fit with its terms is what the plan uses, with its
+    // difference from the analysis in the sigma, and the page says so.
+    const auto e = sessionEstimate(wiz.state());
+    ASSERT_TRUE(e.has_value());
+    ASSERT_EQ(e->source, discrepancy::EstimateSource::kModelCheck);  // the demo's terms are ticked
+    const double d = std::abs(e->report.net_buoyancy_kg.value - wiz.state().analysis->net_buoyancy_kg.value);
+    EXPECT_GE(e->report.net_buoyancy_kg.sigma, d);
+    EXPECT_GE(e->report.net_buoyancy_kg.sigma, wiz.state().analysis->net_buoyancy_kg.sigma);
+    ASSERT_GT(d, wiz.state().analysis->net_buoyancy_kg.sigma);  // this log's check and analysis differ
+    EXPECT_NE(find<QLabel>(wiz, "check_summary")->text().indexOf("differ by"), -1);
     wiz.next();
     ASSERT_EQ(wiz.currentId(), OperatorWizard::kPreMission);
     find<QRadioButton>(wiz, "water_operator")->setChecked(true);

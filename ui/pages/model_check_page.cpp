@@ -287,6 +287,16 @@ void ModelCheckPage::showSummary() {
                         EstimateText::of(a.cg_x_mm, 2, tr(" mm")), EstimateText::of(a.cg_y_mm, 2, tr(" mm")),
                         fixed(r.net_buoyancy_base_kg, g ? 3 : 2));
     s += "<br>" + EstimateText::planUses(e->source);
+    // The check's fit is adopted with its difference from the analysis in
+    // the sigma (discrepancy::planEstimate): said, so the wider margin on
+    // the adjustment page is not a surprise.
+    const analysis::EstimatedValue& before = state_.analysis->net_buoyancy_kg;
+    if (e->source == discrepancy::EstimateSource::kModelCheck && before.known &&
+        std::abs(a.net_buoyancy_kg.value - before.value) > before.sigma)
+      s += " " + tr("The check's fit and the analysis (%1) differ by %2 kg: the uncertainty includes that difference, "
+                    "so the plan's safety margin covers both.")
+                     .arg(EstimateText::of(before, g ? 3 : 2, tr(" kg")),
+                          fixed(std::abs(a.net_buoyancy_kg.value - before.value), g ? 3 : 2));
   } else {
     s += " " + tr("Net buoyancy with the accepted terms <b>%1</b> (ballast state alone: %2 kg).")
                    .arg(EstimateText::valueSigma(true, r.net_buoyancy_kg, r.net_buoyancy_sigma_kg, 3, tr(" kg")),
