@@ -44,8 +44,10 @@ struct WizardSequence {
 std::vector<WizardSequence> everyWizardSequence();
 
 // Lets queued work (imports, model checks) finish and the page become
-// complete, at most `timeout_ms`.
-inline void settlePage(ui::OperatorWizard& wiz, int timeout_ms = 60000) {
+// complete, at most `timeout_ms`. The HUGIN post-mission model check takes
+// about 10 s alone; on a loaded two-core machine (two test runs at once) it
+// took over 60 s, so the bound is 180 s: a hang still fails.
+inline void settlePage(ui::OperatorWizard& wiz, int timeout_ms = 180000) {
   QElapsedTimer t;
   t.start();
   auto busy = [&wiz] {
