@@ -11,6 +11,7 @@
 #include "analysis/averaged_legs.h"
 #include "analysis/flight_envelope.h"
 #include "analysis/auv_transient_fit.h"
+#include "analysis/transient_replay.h"
 #include "analysis/auv_trim_estimation.h"
 #include "analysis/classic_thesis.h"
 #include "analysis/glider_trim.h"
@@ -296,50 +297,9 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     // The transients (depth steps, propeller-speed changes) flown again
     // through the profile's simulator model join the calibration.
     std::optional<TransientFit> transient_fit;
-    // Not on a log flown too light or porpoising: there the plane loop sat at
-    // its stop near the surface or limit-cycled, and the replay fitted the
-    // truth's stop and anti-windup instead of its hydrodynamics (the 4-6
-    // sigma misses and the one negative vehicle of the bench). Logs flown too
-    // heavy keep it: that is where it gained most. Not with a history
-    // calibration either: that joint fit pins the vehicle, and the replay
-    // brought its coverage under 90 % (docs/decisions/analysis-calibration.md).
-    const bool with_history = !ctx.history.empty();
-    if (o.use_transients && replay_unfit) {
-      rep.details["transients_skipped"] = "log not flown as commanded";
-      rep.notes.push_back(Message(msg::kTransientsNotFlownAsCommanded));
-    } else if (o.use_transients && with_history) {
-      rep.details["transients_skipped"] = "history calibration";
-      rep.notes.push_back(Message(msg::kTransientsWithHistory));
-    }
-    if (o.use_transients && !replay_unfit && !with_history && coeffs && coeffs->has_planes && ctx.log_has_elevator && ctx.log_has_speed) {
-      std::optional<sim::VehicleModel> model;
-      sim::DepthAutopilotConfig autopilot;
-      try {
-        model = sim::loadVehicleModel(v);
-        autopilot = sim::loadAutopilotConfig(v);
-      } catch (const std::exception&) {
-        // No simulator sections in this profile: steady segments only (said in the notes below).
-      }
-      if (model) {
-        TransientFitContext tc;
-        tc.weight_n = ctx.weight_n;
-        tc.density_ref_kgm3 = rho;
-        tc.buoyancy_ref_n = units::g0 * Bref;
-        tc.autopilot = autopilot;
-        for (std::size_t i = 0; i < o.installed_kg.size() && i < v.points.size(); ++i) {
-          const Eigen::Vector3d r = v.points[i].position_m - model->body.cb_profile_m;
-          tc.extra_Iyy_kgm2 += o.installed_kg[i] * (r.x() * r.x() + r.z() * r.z());
-        }
-        transient_fit.emplace(log, *model, tc);
-        if (transient_fit->residualCount() > 0) {
-          ctx.transients.residuals = [&f = *transient_fit](const Eigen::VectorXd& p) { return f.residuals(p); };
-          ctx.transients.group_ends = transient_fit->windowEnds();
-          ctx.transients.reweight = [&f = *transient_fit](const Eigen::VectorXd& p) { f.rescaleChannels(p); };
-          ctx.transient_windows = transient_fit->windowCount();
-        }
-      }
-      rep.details["transient_windows"] = ctx.transient_windows;
-    }
+    if (o.use_transients)
+      attachTransientReplay(log, v, o.installed_kg, replay_unfit, coeffs && coeffs->has_planes, rho, Bref, transient_fit,
+                            ctx, rep);
     const AuvTrimEstimate e = estimateAuvTrim(means, coeffs ? &*coeffs : nullptr, why, ctx);
     for (std::size_t w = 0; w < nw; ++w)
       if (std::isfinite(e.segment_net_buoyancy_kg.empty() ? kNaN : e.segment_net_buoyancy_kg[w]))
