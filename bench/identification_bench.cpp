@@ -11,8 +11,9 @@
 // the analysis also fits the transients, auv_transient_fit.h; --fly-manoeuvre:
 // the second mission also flies the calibration manoeuvre the first plan
 // asked for, details.calibration_manoeuvre.flight; --model-check N: the
-// model check of the first N logs, which conceal no effect: the terms it
-// names there are false, and how often its own ballast fit and the one the
+// model check of the first N logs, which conceal no effect, run with each
+// log's analysis as the CLI and the wizard run it: the terms it names there
+// are false, and how often its own ballast fit and the one the
 // plan adopts with all its terms accepted (planEstimate) cover the truth)
 #include <algorithm>
 #include <chrono>
@@ -96,8 +97,10 @@ struct ModelCheckTally {
   std::vector<double> check_z, plan_z;  // |error| / sigma of net buoyancy
   void add(const MissionLog& log, const VehicleProfile& v, const analysis::AnalysisReport& rep, double net_truth,
            double x_truth, bool verbose) {
+    discrepancy::CheckSetup setup;
+    setup.analysis = &rep;  // as the CLI and the wizard check a log: with its analysis
     const discrepancy::ModelCheckResult r =
-        discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, v, AUV_RESOURCE_DIR));
+        discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, v, AUV_RESOURCE_DIR, setup));
     ++logs;
     std::vector<std::string> ids;
     for (const auto& m : r.missing_physics) ids.push_back(m.id), ++terms[m.id];

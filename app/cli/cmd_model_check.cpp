@@ -105,6 +105,7 @@ int runModelCheck(const ModelCheckOpts& o) {
   const MissionLog log = readLogArgument(o.log, logReadOptions(o.cache_dir), readReport);
   const analysis::AnalysisReport r = aboutFile(logArgumentLabel(o.log), [&] { return analysis::analyzeMission(log, v, a); });
   nlohmann::json j = analysis::toJson(r);
+  setup.analysis = &r;  // an AUV's check holds this analysis's calibration, in its water
   const std::unique_ptr<discrepancy::CheckModel> model = aboutFile(
       logArgumentLabel(o.log), [&] { return discrepancy::makeCheckModel(log, v, app::resourceDir(), setup); });
   const discrepancy::ModelCheckResult mc =

@@ -50,6 +50,10 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
     if (const LogChannel* c = log.find(name)) log_.channels.push_back(*c);
   baseline_ = acceptedTermsFromProfile(v.sections, v.file);
   if (!o.installed_kg.empty()) installed_ = sim::installedWeights(v, o.installed_kg);
+  profile_bg_m_ = sim::flownMass(model_, installed_, std::nullopt, {}, 0.0).r_g_m.z();
+  if (!(profile_bg_m_ > 1e-4))
+    throw InputError(v.file, "the profile's CG is not below its CB (BG " + std::to_string(profile_bg_m_ * 1e3) + " mm as flown)",
+                     "give bg_mm (or cg_mm) so the CG lies below the CB: an AUV without static stability cannot be checked");
 
   // Uniform grid.
   const TimeSeries pitchS = log.series("pitch");
@@ -262,175 +266,6 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
   }
 }
 
-// Calibration constants in the nuisance vector, after the ballast state.
-enum CalibrationIndex : int {
-  kTorque = 3,
-  kHeave,
-  kCrossflow,
-  kNetMw,
-  kPitchDamping,
-  kRollDamping,
-  kPlanes,
-  kDrag,
-  kNuisanceCount
-};
-
-namespace {
-
-struct CalibrationSpec {
-  CalibrationIndex index;
-  const char* id;
-  const char* label;
-  const char* unit;
-};
-// Scale groups: value = the vehicle's derivatives as a multiple of the profile's.
-constexpr CalibrationSpec kCalibration[] = {
-    {kTorque, "propeller_torque", "propeller torque", "N*m/rpm^2"},
-    {kHeave, "heave_derivatives", "heave derivatives Z_w, Z_q, Z_ww", "x profile"},
-    {kNetMw, "net_pitch_moment_derivative", "net pitch-moment derivative M_w' with the Munk moment", "nondimensional"},
-    {kCrossflow, "crossflow_pitch_moment", "crossflow pitch moment M_|w|w", "x profile"},
-    {kPitchDamping, "pitch_damping", "linear pitch damping M_q", "x profile"},
-    {kRollDamping, "roll_damping", "roll damping K_p, K_|p|p", "x profile"},
-    {kPlanes, "stern_plane_effectiveness", "stern-plane effectiveness Z_uud, M_uud", "x profile"},
-    {kDrag, "surge_drag", "surge drag X_u, X_uu", "x profile"},
-};
-constexpr double kGroupSigma = 0.3;  // default prior sigma of a hydrodynamic group (issue 11)
-}  // namespace
-
-double AuvCheckModel::profileTorque() const {
-  const sim::Propeller& p = model_.prop;
-  const std::size_t k = *findTerm("propeller_torque");
-  return p.torque_sign * p.KQ0 * kRhoRef * std::pow(p.diameter_m, 5) / 3600.0 + baseline_[k];
-}
-
-double AuvCheckModel::torqueSigma() const { return std::max(std::abs(profileTorque()), termLibrary()[*findTerm("propeller_torque")].typical); }
-
-// Munk moment (X_udot - Z_wdot) u w as a nondimensional M_w' (rho 1025).
-double AuvCheckModel::munkPrime() const {
-  const double L = model_.body.reference_length_m;
-  return (model_.hydro.Xudot_kg - model_.hydro.Zwdot_kg) / (0.5 * kRhoRef * L * L * L);
-}
-
-// The linear u w pitch-moment coefficient the vehicle flies with. Whether a
-// tabulated M_w' holds the Munk moment or not changes even its sign, and a
-// log sees only the sum: one constant, prior sigma 30 % of M_w' plus half
-// the Munk moment (inside or on top are both within 2 sigma).
-double AuvCheckModel::profileNetMw() const { return model_.hydro.Mw_prime + munkPrime(); }
-double AuvCheckModel::netMwSigma() const {
-  return std::max(kGroupSigma * std::abs(model_.hydro.Mw_prime) + 0.5 * std::abs(munkPrime()), 1e-4);
-}
-
-sim::VehicleModel AuvCheckModel::calibratedModel(const Params& p) const {
-  sim::VehicleModel m = model_;
-  if (p.nuisance.size() < kNuisanceCount) return m;
-  const double z = p.nuisance[kHeave], mq = p.nuisance[kPitchDamping];
-  const double k = p.nuisance[kRollDamping], d = p.nuisance[kPlanes];
-  m.hydro.Zw_prime *= z;
-  m.hydro.Zq_prime *= z;
-  m.hydro.Zww_kg_per_m *= z;
-  // The simulator adds the Munk moment to M_w' itself (Coriolis terms).
-  m.hydro.Mw_prime = p.nuisance[kNetMw] - munkPrime();
-  m.hydro.Mww_kg *= p.nuisance[kCrossflow];
-  m.hydro.Mq_prime *= mq;
-  m.hydro.Kp_kgm2_per_s *= k;
-  m.hydro.Kpp_kgm2 *= k;
-  m.planes.X_uudd_per_deg2 *= d;
-  m.planes.Z_uud_per_deg *= d;
-  m.planes.M_uud_per_deg *= d;
-  m.hydro.Xu_kg_per_s *= p.nuisance[kDrag];
-  m.hydro.Xuu_kg_per_m *= p.nuisance[kDrag];
-  return m;
-}
-
-std::vector<std::string> AuvCheckModel::nuisanceNames() const {
-  std::vector<std::string> n = {"net_buoyancy_kg", "cg_x_shift_m", "cg_y_shift_m"};
-  for (const CalibrationSpec& c : kCalibration) n.emplace_back(c.id);
-  return n;
-}
-
-std::vector<CalibrationConstant> AuvCheckModel::calibrationConstants() const {
-  std::vector<CalibrationConstant> out;
-  for (const CalibrationSpec& c : kCalibration) {
-    CalibrationConstant k;
-    k.id = c.id;
-    k.label = c.label;
-    k.unit = c.unit;
-    k.index = c.index;
-    k.profile_value = c.index == kTorque ? profileTorque() : c.index == kNetMw ? profileNetMw() : 1.0;
-    k.prior_sigma = c.index == kTorque ? torqueSigma() : c.index == kNetMw ? netMwSigma() : kGroupSigma;
-    out.push_back(k);
-  }
-  return out;
-}
-
-double AuvCheckModel::profileTermValue(std::size_t term) const {
-  const PhysicsTerm& t = termLibrary()[term];
-  double v = baseline_[term] * t.display_scale;
-  if (t.id == "hull_compressibility") v += model_.body.hull.compressibility_per_dbar;
-  if (t.id == "thermal_expansion") v += model_.body.hull.thermal_expansion_per_degC;
-  if (t.id == "quadratic_pitch_damping") v += 1.0;  // the vehicle's M_|q|q as a multiple of the profile's
-  return v;
-}
-
-TermValues AuvCheckModel::total(const Params& p) const {
-  TermValues t = baseline_;
-  for (std::size_t k = 0; k < kTermCount; ++k) t[k] += p.terms[k];
-  // The calibrated propeller torque replaces the profile's: the model's own
-  // K_Q0 is in the dynamics, the difference goes through the library term.
-  if (p.nuisance.size() >= kNuisanceCount) t[*findTerm("propeller_torque")] += p.nuisance[kTorque] - profileTorque();
-  return t;
-}
-
-sim::VehicleLoading AuvCheckModel::loading(const Params& p) const {
-  sim::VehicleLoading l;
-  l.extra_masses = installed_;
-  l.error.net_buoyancy_kg = p.nuisance[0];
-  l.error.cg_shift_m = Eigen::Vector3d(p.nuisance[1], p.nuisance[2], 0.0);
-  return l;
-}
-
-Eigen::VectorXd AuvCheckModel::nuisanceStart() const {
-  Eigen::VectorXd x = Eigen::VectorXd::Ones(kNuisanceCount);
-  x.head(3).setZero();
-  x[kTorque] = profileTorque();
-  x[kNetMw] = profileNetMw();
-  return x;
-}
-
-Eigen::VectorXd AuvCheckModel::nuisanceScale() const {
-  Eigen::VectorXd x = Eigen::VectorXd::Constant(kNuisanceCount, 0.1);
-  x.head(3) << 0.01, 1e-4, 1e-4;
-  x[kTorque] = 0.1 * torqueSigma();
-  x[kNetMw] = 0.1 * netMwSigma();
-  return x;
-}
-
-Eigen::VectorXd AuvCheckModel::nuisanceLower() const {
-  Eigen::VectorXd x = Eigen::VectorXd::Constant(kNuisanceCount, 0.1);
-  x.head(3) << -0.05 * model_.body.mass_kg, -0.1, -0.1;
-  x[kTorque] = profileTorque() - 20.0 * torqueSigma();
-  x[kNetMw] = profileNetMw() - 10.0 * netMwSigma();
-  return x;
-}
-
-Eigen::VectorXd AuvCheckModel::nuisanceUpper() const {
-  Eigen::VectorXd x = Eigen::VectorXd::Constant(kNuisanceCount, 4.0);
-  x.head(3) << 0.05 * model_.body.mass_kg, 0.1, 0.1;
-  x[kTorque] = profileTorque() + 20.0 * torqueSigma();
-  x[kNetMw] = profileNetMw() + 10.0 * netMwSigma();
-  return x;
-}
-
-std::vector<NuisancePrior> AuvCheckModel::priors() const {
-  std::vector<NuisancePrior> p;
-  if (opt_.cg_y_sigma_m) p.push_back({2, 0.0, *opt_.cg_y_sigma_m, true});
-  // Calibration constants: propeller torque 0 +- the profile's (it may be
-  // anything from none to twice the assumed), the rest at the profile's.
-  for (const CalibrationConstant& c : calibrationConstants())
-    p.push_back({c.index, c.id == "propeller_torque" ? 0.0 : c.profile_value, c.prior_sigma, false});
-  return p;
-}
-
 bool AuvCheckModel::applicable(std::size_t term) const {
   const PhysicsTerm& t = termLibrary()[term];
   if (!(t.families & kAuvFamily)) return false;
@@ -572,16 +407,21 @@ void AuvCheckModel::shortHorizonSimulationError(const Params& p, std::vector<dou
   replayError(p, opt_.short_horizon_s, opt_.short_settle_s, out);
 }
 
+std::optional<ReferenceWater> AuvCheckModel::referenceWater() const {
+  return opt_.report_water ? *opt_.report_water : ReferenceWater{ref_rho_, ref_T_, ref_p_};
+}
+
 double AuvCheckModel::netBuoyancyKg(const Params& p) const {
   const sim::VehicleLoading L = loading(p);
   const sim::FlownMass fm = sim::flownMass(model_, L.extra_masses, std::nullopt, L.error, 0.0);
+  const ReferenceWater w = *referenceWater();
   TermInputs in;
-  in.pressure_dbar = ref_p_;
-  in.temperature_degC = ref_T_;
+  in.pressure_dbar = w.pressure_dbar;
+  in.temperature_degC = w.temperature_degC;
   in.reference_temperature_degC = model_.body.hull.reference_temperature_degC;
   Effects e;
   applyEffects(total(p), in, e);
-  const double B = ref_rho_ * model_.body.hull.volumeAt(ref_T_, ref_p_) * e.volume_factor;
+  const double B = w.density_kgm3 * model_.body.hull.volumeAt(w.temperature_degC, w.pressure_dbar) * e.volume_factor;
   return B - fm.mass_kg;
 }
 

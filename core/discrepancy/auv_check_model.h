@@ -27,8 +27,11 @@
 // each; the drag from the surge equation), and the net linear pitch-moment
 // derivative M_w' + Munk' (whether the tabulated M_w' holds the Munk moment
 // is unknown and a log sees only the sum; prior sigma 30 % of M_w' plus half
-// the Munk term). M_|q|q is not among them: an unmodelled quadratic pitch
-// damping is a library term (quadratic_pitch_damping).
+// the Munk term), and BG as flown (held at the profile's). With the same
+// log's analysis (AuvCheckOptions::calibration_priors) every group the
+// analysis calibrates is held at its value, with the analysis's grouping
+// (crossflow = Z_ww, M_ww, M_|q|q: auv_transient_fit.cpp). A quadratic pitch
+// damping beyond that is a library term (quadratic_pitch_damping).
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,6 +62,22 @@ struct AuvCheckOptions {
   double short_settle_s = 15.0;
   double replay_dt_s = 0.05;
   double min_depth_m = 1.0;                // rows shallower are surface rows (not in the equation error)
+  // The water the net buoyancy is reported in: the analysis's mean water, so
+  // the check's and the analysis's estimates are the same quantity. Empty =
+  // the mean over the check's own rows (which include dives and climbs).
+  std::optional<ReferenceWater> report_water;
+  // The analysis's calibration (issue 11 item 6: the check works against
+  // the calibrated vehicle): a constant listed here is held at `value` and
+  // reported with `sigma` (ids and units of calibrationConstants()) instead
+  // of fitted from the profile's prior. Steady-leg means carry no regressor
+  // noise; the check's equation error does, and alone it shrank every
+  // moment group.
+  struct CalibrationPrior {
+    std::string id;
+    double value = 0.0, sigma = 0.0;
+    bool held = true;  // false: only a prior (the analysis did not identify it), fitted here
+  };
+  std::vector<CalibrationPrior> calibration_priors;
 };
 
 class AuvCheckModel final : public CheckModel {
@@ -88,6 +107,7 @@ class AuvCheckModel final : public CheckModel {
   void simulationError(const Params& p, std::vector<double>& out) const override;
   void shortHorizonSimulationError(const Params& p, std::vector<double>& out) const override;
   double netBuoyancyKg(const Params& p) const override;
+  std::optional<ReferenceWater> referenceWater() const override;
   bool hasCg() const override { return true; }
   double cgX(const Params& p) const override;
   double cgY(const Params& p) const override;
@@ -112,6 +132,11 @@ class AuvCheckModel final : public CheckModel {
   };
   TermValues total(const Params& p) const;
   double torqueSigma() const;  // prior sigma of the propeller torque
+  double bgSigma() const;      // prior sigma of BG
+  // The analysis's prior for calibration constant `id`, if it gave one.
+  const AuvCheckOptions::CalibrationPrior* calibrationPrior(const std::string& id) const;
+  bool crossflowFromAnalysis() const;
+  Eigen::VectorXd holdAtAnalysis(Eigen::VectorXd bound) const;  // held groups' bounds = their value  // the crossflow group is the analysis's (Z_ww, M_ww, M_qq)
   double munkPrime() const;
   double profileNetMw() const;
   double netMwSigma() const;
@@ -123,6 +148,7 @@ class AuvCheckModel final : public CheckModel {
   std::vector<MassItem> installed_;
   AuvCheckOptions opt_;
   TermValues baseline_{};
+  double profile_bg_m_ = 0.02;  // BG as flown with the installed weights, the profile's
   std::vector<GridState> grid_;
   std::vector<double> gridT_;
   double dt_ = 0.2;

@@ -8,6 +8,7 @@
 // model of core/sim (auv_check_model.h).
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -23,6 +24,14 @@ enum class Phase : std::uint8_t { kSurface, kDive, kClimb, kLevel, kTurn };
 const char* phaseName(Phase p);
 
 // One row per compared sample, in time order. NaN where the log cannot say.
+// The water a net buoyancy is stated in: density, and the temperature and
+// pressure the hull's volume is taken at.
+struct ReferenceWater {
+  double density_kgm3 = 1025.0;
+  double temperature_degC = 10.0;
+  double pressure_dbar = 0.0;
+};
+
 struct SampleTable {
   std::vector<double> t;               // s since the log start
   std::vector<int> block;              // glide or leg (a simulation restarts or is scored per block)
@@ -61,6 +70,10 @@ struct CalibrationConstant {
   double display_scale = 1.0;  // nuisance -> reported unit
   double profile_value = 0.0;  // reported unit
   double prior_sigma = 0.0;    // reported unit
+  // > 0: held at a value calibrated elsewhere (the analysis's, with this
+  // sigma in the reported unit) instead of fitted here; the reported sigma.
+  double held_sigma = 0.0;
+  bool from_analysis = false;  // held at the same log's analysis's value (and grouping)
 };
 
 class CheckModel {
@@ -104,6 +117,10 @@ class CheckModel {
   // The reported net buoyancy [kg] and CG offset [m] for a nuisance vector
   // (and term values, which may move the reference state's buoyancy).
   virtual double netBuoyancyKg(const Params& p) const = 0;
+  // The water netBuoyancyKg is reported in (a net buoyancy means nothing
+  // without it: in stratified water 0.3 kg/m^3 of density is 0.3 kg on a
+  // one-tonne AUV). Empty where the model does not say.
+  virtual std::optional<ReferenceWater> referenceWater() const { return std::nullopt; }
   virtual bool hasCg() const { return false; }
   virtual double cgX(const Params&) const { return std::numeric_limits<double>::quiet_NaN(); }
   virtual double cgY(const Params&) const { return std::numeric_limits<double>::quiet_NaN(); }

@@ -35,9 +35,11 @@ void reportCalibration(const CheckModel& m, const Fit& fin, ModelCheckResult& R)
     c.unit = k.unit;
     c.label = k.label;
     c.value = fin.params.nuisance[k.index] * k.display_scale;
-    c.sigma = fin.sigma[k.index] * k.display_scale;
+    // A held constant's fit sigma is the holding prior's, not a measurement.
+    c.sigma = k.held_sigma > 0.0 ? k.held_sigma : fin.sigma[k.index] * k.display_scale;
     c.profile_value = k.profile_value;
     c.prior_sigma = k.prior_sigma;
+    c.from_analysis = k.from_analysis;
     c.identified = c.sigma < 0.5 * c.prior_sigma;
     // Far from the profile: more than 3 of its own sigmas and more than half
     // the prior's (a small but certain difference is not worth a word).

@@ -36,6 +36,7 @@ ModelCheckResult runModelCheck(const CheckModel& m, const ModelCheckOptions& o) 
   using namespace detail;
   ModelCheckResult R;
   R.model = m.description();
+  R.reference_water = m.referenceWater();
   R.notes = m.notes();
   const SampleTable& S = m.samples();
   const std::size_t N = S.size();

@@ -107,6 +107,7 @@ struct CalibrationValue {
   double profile_value = 0.0, prior_sigma = 0.0;
   bool identified = false;  // posterior sigma below half the prior's: the log, not the prior, says it
   std::string finding;      // set when the log puts it far from the profile's value, in words
+  bool from_analysis = false;  // held at the analysis's calibration, not fitted by the check
 };
 
 struct IdentifiabilityIssue {
@@ -137,6 +138,7 @@ struct ModelCheckResult {
   std::vector<Localisation> localisation;       // residuals of the ballast-only model
   // Ballast state, jointly with the accepted terms (and without, for comparison).
   double net_buoyancy_kg = 0.0, net_buoyancy_sigma_kg = 0.0, net_buoyancy_base_kg = 0.0;
+  std::optional<ReferenceWater> reference_water;  // the water the net buoyancy is stated in
   bool has_cg = false;
   double cg_x_mm = 0.0, cg_y_mm = 0.0, cg_x_sigma_mm = 0.0, cg_y_sigma_mm = 0.0;
   std::vector<std::string> nuisance_names;

@@ -73,7 +73,8 @@ nlohmann::json toJson(const ModelCheckResult& r) {
                         {"sigma", num(c.sigma)},
                         {"profile_value", num(c.profile_value)},
                         {"prior_sigma", num(c.prior_sigma)},
-                        {"identified", c.identified}};
+                        {"identified", c.identified},
+                        {"from_analysis", c.from_analysis}};
     if (!c.finding.empty()) {
       x["finding"] = c.finding;
       findings.push_back(c.finding);
@@ -94,6 +95,10 @@ nlohmann::json toJson(const ModelCheckResult& r) {
   mc["units"] = r.units;
   mc["effective_sample_share"] = num(r.neff_ratio);
   mc["net_buoyancy_without_terms_kg"] = num(r.net_buoyancy_base_kg);
+  if (r.reference_water)
+    mc["reference_water"] = {{"density_kgm3", num(r.reference_water->density_kgm3)},
+                             {"temperature_degC", num(r.reference_water->temperature_degC)},
+                             {"pressure_dbar", num(r.reference_water->pressure_dbar)}};
   nlohmann::json ballast = nlohmann::json::object();
   for (std::size_t k = 0; k < r.nuisance_names.size() && k < r.nuisance.size(); ++k) {
     const bool calibration = std::any_of(r.calibration.begin(), r.calibration.end(),
@@ -237,10 +242,11 @@ std::string toText(const ModelCheckResult& r) {
     }
   }
   if (!r.calibration.empty()) {
-    s += "  Calibration (fitted with the ballast state under priors; not missing physics):\n";
+    s += "  Calibration (the analysis's where it calibrated them, else fitted with the ballast state under priors; not missing physics):\n";
     for (const CalibrationValue& c : r.calibration) {
       std::snprintf(b, sizeof b, "    %-26s %.4g +- %.2g %s (profile %.4g, prior sigma %.2g)%s\n", c.id.c_str(), c.value, c.sigma,
-                    c.unit.c_str(), c.profile_value, c.prior_sigma, c.identified ? "" : " - stayed at its prior");
+                    c.unit.c_str(), c.profile_value, c.prior_sigma,
+                    c.from_analysis ? " - the analysis's, held" : c.identified ? "" : " - stayed at its prior");
       s += b;
     }
     for (const CalibrationValue& c : r.calibration)

@@ -61,8 +61,14 @@ void writeCalibration(nlohmann::json& out, const ModelCheckResult& r, const std:
     }
   }
   if (const CalibrationValue* c = calibrationOf(r, "heave_derivatives"); c && hydro) {
-    scaleFields(out["hydrodynamics"], {"Zw_prime", "Zq_prime", "Zww_kg_per_m"}, c->value);
-    record(*c, "hydrodynamics.Zw_prime, Zq_prime, Zww_kg_per_m");
+    // The analysis's heave group leaves Z_ww to the crossflow group.
+    if (c->from_analysis) {
+      scaleFields(out["hydrodynamics"], {"Zw_prime", "Zq_prime"}, c->value);
+      record(*c, "hydrodynamics.Zw_prime, Zq_prime");
+    } else {
+      scaleFields(out["hydrodynamics"], {"Zw_prime", "Zq_prime", "Zww_kg_per_m"}, c->value);
+      record(*c, "hydrodynamics.Zw_prime, Zq_prime, Zww_kg_per_m");
+    }
   }
   if (const CalibrationValue* c = calibrationOf(r, "net_pitch_moment_derivative"); c && hydro) {
     // The simulator adds the Munk moment (X_udot - Z_wdot) u w to M_w' itself.
@@ -73,8 +79,13 @@ void writeCalibration(nlohmann::json& out, const ModelCheckResult& r, const std:
     record(*c, "hydrodynamics.Mw_prime");
   }
   if (const CalibrationValue* c = calibrationOf(r, "crossflow_pitch_moment"); c && hydro) {
-    scaleFields(out["hydrodynamics"], {"Mww_kg"}, c->value);
-    record(*c, "hydrodynamics.Mww_kg");
+    if (c->from_analysis) {
+      scaleFields(out["hydrodynamics"], {"Zww_kg_per_m", "Mww_kg", "Mqq_kgm2_per_rad2"}, c->value);
+      record(*c, "hydrodynamics.Zww_kg_per_m, Mww_kg, Mqq_kgm2_per_rad2");
+    } else {
+      scaleFields(out["hydrodynamics"], {"Mww_kg"}, c->value);
+      record(*c, "hydrodynamics.Mww_kg");
+    }
   }
   if (const CalibrationValue* c = calibrationOf(r, "surge_drag"); c && hydro) {
     scaleFields(out["hydrodynamics"], {"Xu_kg_per_s", "Xuu_kg_per_m"}, c->value);
@@ -87,6 +98,18 @@ void writeCalibration(nlohmann::json& out, const ModelCheckResult& r, const std:
   if (const CalibrationValue* c = calibrationOf(r, "roll_damping"); c && out.contains("sim_assumptions")) {
     scaleFields(out["sim_assumptions"], {"Kp_kgm2_per_s", "Kpp_kgm2"}, c->value);
     record(*c, "sim_assumptions.Kp_kgm2_per_s, Kpp_kgm2");
+  }
+  if (const CalibrationValue* c = calibrationOf(r, "bg"); c && (out.contains("bg_mm") || out.contains("cg_mm"))) {
+    // The check's BG is as flown (installed weights included); the
+    // difference from the profile's is the base vehicle's too.
+    const double dz_mm = 1e3 * (c->value - c->profile_value);
+    if (out.contains("cg_mm") && out["cg_mm"].contains("z_mm")) {
+      out["cg_mm"]["z_mm"] = out["cg_mm"]["z_mm"].get<double>() + dz_mm;
+      record(*c, "cg_mm.z_mm");
+    } else if (out.contains("bg_mm") && out["bg_mm"].is_number()) {
+      out["bg_mm"] = out["bg_mm"].get<double>() + dz_mm;
+      record(*c, "bg_mm");
+    }
   }
   if (const CalibrationValue* c = calibrationOf(r, "stern_plane_effectiveness"); c && has(out, "actuators", "stern_planes")) {
     scaleFields(out["actuators"]["stern_planes"], {"X_uudd_kg_per_m_deg2", "Z_uud_kg_per_m_deg", "M_uud_kg_per_deg"}, c->value);

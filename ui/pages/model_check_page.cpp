@@ -206,7 +206,7 @@ void ModelCheckPage::initializePage() {
   } catch (const InputError&) {
     // The session's vehicle, e.g. a profile file that is not in the catalog.
   }
-  job_.start(state_.log, base, state_.resource_dir, setup);
+  job_.start(state_.log, base, state_.resource_dir, setup, {}, state_.analysis);
   emit completeChanged();
 }
 

@@ -48,6 +48,7 @@ class ModelCheckPage : public QWizardPage {
   ModelCheckJob& job() { return job_; }
   // The overlay of the last check (empty before one finished).
   const discrepancy::SimulationOverlay& overlay() const { return outcome_.overlay; }
+  const ModelCheckOutcome& outcome() const { return outcome_; }
   // Index into overlay().channels shown in the chart.
   int shownChannel() const;
   void showChannel(int index);

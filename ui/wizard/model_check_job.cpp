@@ -18,10 +18,15 @@ bool ModelCheckJob::running() const { return watcher_.isRunning(); }
 void ModelCheckJob::waitForFinished() { watcher_.waitForFinished(); }
 
 void ModelCheckJob::start(std::shared_ptr<const MissionLog> log, VehicleProfile vehicle, std::string resource_dir,
-                          discrepancy::CheckSetup setup, discrepancy::ModelCheckOptions options) {
+                          discrepancy::CheckSetup setup, discrepancy::ModelCheckOptions options,
+                          std::optional<analysis::AnalysisReport> analysis) {
   if (running() || !log) return;
   watcher_.setFuture(QtConcurrent::run(workerPool(), [log, vehicle = std::move(vehicle), dir = std::move(resource_dir),
-                                        setup = std::move(setup), options = std::move(options)]() {
+                                        base_setup = std::move(setup), options = std::move(options),
+                                        analysis = std::move(analysis)]() {
+    // The job's own copy of the analysis: the page's may change while it runs.
+    discrepancy::CheckSetup setup = base_setup;
+    if (analysis) setup.analysis = &*analysis;
     lowerWorkerPriority();
     ModelCheckOutcome out;
     out.log = log;

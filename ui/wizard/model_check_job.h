@@ -34,9 +34,12 @@ class ModelCheckJob : public QObject {
   explicit ModelCheckJob(QObject* parent = nullptr);
   ~ModelCheckJob() override;
 
-  // Ignored while a check is running.
+  // Ignored while a check is running. `analysis`: the same log's analysis
+  // (an AUV's check then holds its calibration and states its net buoyancy
+  // in the same water; CheckSetup::analysis), copied for the job.
   void start(std::shared_ptr<const MissionLog> log, VehicleProfile vehicle, std::string resource_dir,
-             discrepancy::CheckSetup setup, discrepancy::ModelCheckOptions options = {});
+             discrepancy::CheckSetup setup, discrepancy::ModelCheckOptions options = {},
+             std::optional<analysis::AnalysisReport> analysis = std::nullopt);
   bool running() const;
   void waitForFinished();
 
