@@ -19,6 +19,7 @@
 #include "wizard/page_renderer.h"
 #include "wizard/pinned_fonts.h"
 #include "wizard/translations.h"
+#include "wizard/worker_pool.h"
 
 namespace {
 
@@ -57,6 +58,9 @@ int main(int argc, char** argv) {
     if (!why.isEmpty()) std::cerr << "auvballast-gui: " << why.toStdString() << " (rendering with other fonts)\n";
   }
   QApplication app(argc, argv);
+  // Starting Qt GUI leaves this thread's upper AVX state dirty, and every
+  // thread started from it would inherit that (worker_pool.h).
+  auv::ui::clearAvxUpperState();
   QApplication::setOrganizationName("auvballast");
   QApplication::setApplicationName("auvballast");
   QApplication::setApplicationVersion(AUV_VERSION);

@@ -25,13 +25,13 @@ void ModelCheckJob::start(std::shared_ptr<const MissionLog> log, VehicleProfile 
                                         base_setup = std::move(setup), options = std::move(options),
                                         analysis = std::move(analysis)]() {
     // The job's own copy of the analysis: the page's may change while it runs.
-    discrepancy::CheckSetup setup = base_setup;
-    if (analysis) setup.analysis = &*analysis;
+    discrepancy::CheckSetup job_setup = base_setup;
+    if (analysis) job_setup.analysis = &*analysis;
     lowerWorkerPriority();
     ModelCheckOutcome out;
     out.log = log;
     try {
-      const std::shared_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(*log, vehicle, dir, setup);
+      const std::shared_ptr<discrepancy::CheckModel> model = discrepancy::makeCheckModel(*log, vehicle, dir, job_setup);
       out.model = model;
       out.description = model->description();
       out.result = discrepancy::runModelCheck(*model, options);

@@ -20,7 +20,15 @@ QThreadPool* workerPool() {
   return pool;
 }
 
+void clearAvxUpperState() {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  static const bool avx = __builtin_cpu_supports("avx");
+  if (avx) __asm__ volatile("vzeroupper");
+#endif
+}
+
 void lowerWorkerPriority() {
+  clearAvxUpperState();  // every time: the job's own code may follow Qt code on this thread
 #ifdef __linux__
   // Per thread on Linux: setpriority on the thread id, not the process.
   thread_local bool done = false;

@@ -11,7 +11,16 @@ namespace auv::ui {
 
 QThreadPool* workerPool();
 // Called first by every piece of work run on workerPool() (pool threads
-// are created lazily, so the pool cannot set it once).
+// are created lazily, so the pool cannot set it once). Also clears the
+// upper halves of the AVX registers (clearAvxUpperState).
 void lowerWorkerPriority();
+
+// vzeroupper where the CPU has AVX. A thread inherits its creator's vector
+// registers; once Qt GUI has started, the UI thread's upper AVX state is
+// dirty, and every SSE instruction of a thread that inherits it pays the
+// AVX-SSE transition: measured, the HUGIN demo model check took 11.4 s in a
+// process with a QGuiApplication against 2.0 s without, and 2.0 s again
+// after this (docs/decisions/worker-avx-state.md). No-op elsewhere.
+void clearAvxUpperState();
 
 }  // namespace auv::ui
