@@ -132,7 +132,7 @@ std::vector<CalibrationConstant> AuvCheckModel::calibrationConstants() const {
     k.index = c.index;
     k.profile_value = c.index == kTorque ? profileTorque() : c.index == kNetMw ? profileNetMw() : c.index == kBg ? profile_bg_m_ : 1.0;
     k.prior_sigma = c.index == kTorque ? torqueSigma() : c.index == kNetMw ? netMwSigma() : c.index == kBg ? bgSigma() : kGroupSigma;
-    if (const auto* a = calibrationPrior(c.id); a && a->held) {
+    if (const auto* a = calibrationPrior(c.id); a) {
       k.held_sigma = a->sigma;
       k.from_analysis = true;
     }
@@ -187,8 +187,7 @@ const AuvCheckOptions::CalibrationPrior* AuvCheckModel::calibrationPrior(const s
 // group cost 5 of 27 top-1 hits and named terms on 4 controls). Held at the
 // analysis's calibration, it follows the analysis's grouping.
 bool AuvCheckModel::crossflowFromAnalysis() const {
-  const auto* a = calibrationPrior("crossflow_pitch_moment");
-  return a && a->held;
+  return calibrationPrior("crossflow_pitch_moment") != nullptr;
 }
 
 // A held group's bounds close on its value: a prior of a twentieth of the
@@ -197,7 +196,7 @@ bool AuvCheckModel::crossflowFromAnalysis() const {
 // propeller torque with it to 0.66 of the truth).
 Eigen::VectorXd AuvCheckModel::holdAtAnalysis(Eigen::VectorXd bound) const {
   for (const CalibrationSpec& c : kCalibration)
-    if (const auto* a = calibrationPrior(c.id); a && a->held) bound[c.index] = a->value;
+    if (const auto* a = calibrationPrior(c.id); a) bound[c.index] = a->value;
   return bound;
 }
 
@@ -246,7 +245,7 @@ std::vector<NuisancePrior> AuvCheckModel::priors() const {
   // anything from none to twice the assumed), the rest at the profile's.
   for (const CalibrationConstant& c : calibrationConstants()) {
     if (const auto* a = calibrationPrior(c.id))
-      p.push_back({c.index, a->value, (a->held ? kHeldPriorShare : 1.0) * a->sigma, false});
+      p.push_back({c.index, a->value, kHeldPriorShare * a->sigma, false});
     else if (c.index == kBg)
       // Without the analysis's BG the check keeps the profile's: fitted
       // freely from the equation error it collapsed to its bound (the
