@@ -7,15 +7,45 @@
 
 namespace auv::discrepancy {
 
-MissionLog synthesizeAuvLog(const sim::SimVehicle& vehicle, const std::string& id, const SyntheticAuvTruth& truth,
-                            const SyntheticAuvMission& m) {
-  sim::VehicleModel model = vehicle.model;
+void applyTruthEffects(sim::VehicleModel& model, const SyntheticAuvTruth& truth) {
   model.body.hull.compressibility_per_dbar += truth.extra_compressibility_per_dbar;
   model.body.hull.thermal_expansion_per_degC += truth.extra_thermal_expansion_per_degC;
   const double kq = model.prop.torque_sign * model.prop.KQ0 + truth.extra_prop_KQ0;
   model.prop.torque_sign = kq < 0 ? -1.0 : 1.0;
   model.prop.KQ0 = std::abs(kq);
   model.hydro.Mqq_kgm2 *= 1.0 + truth.pitch_damping_scale;
+}
+
+void applyTruthEffects(sim::Scenario& sc, const SyntheticAuvTruth& truth, double duration_s) {
+  // A biased sensor: the autopilot holds the biased reading at the command,
+  // i.e. the true state at command - bias.
+  for (sim::DepthLeg& L : sc.legs) {
+    L.depth_m -= truth.depth_offset_m;
+    L.pitch_rad -= units::degToRad(truth.pitch_bias_deg);
+  }
+  if (truth.mass_drift_kg_per_h != 0.0) {
+    const double step = 10.0;
+    for (double t = step; t < duration_s; t += step)
+      sc.buoyancy_changes.push_back({t, -units::g0 * truth.mass_drift_kg_per_h * step / 3600.0});
+  }
+}
+
+void recordSensorBiases(MissionLog& log, const SyntheticAuvTruth& truth) {
+  auto shift = [&](const char* name, double d) {
+    if (LogChannel* c = log.find(name))
+      for (double& x : c->values) x += d;
+  };
+  shift("depth", truth.depth_offset_m);
+  shift("depth_cmd", truth.depth_offset_m);
+  shift("pitch", truth.pitch_bias_deg);
+  shift("pitch_cmd", truth.pitch_bias_deg);
+  shift("roll", truth.roll_bias_deg);
+}
+
+MissionLog synthesizeAuvLog(const sim::SimVehicle& vehicle, const std::string& id, const SyntheticAuvTruth& truth,
+                            const SyntheticAuvMission& m) {
+  sim::VehicleModel model = vehicle.model;
+  applyTruthEffects(model, truth);
 
   sim::Scenario sc;
   if (!m.legs.empty()) {
@@ -29,21 +59,10 @@ MissionLog synthesizeAuvLog(const sim::SimVehicle& vehicle, const std::string& i
       sc.legs.push_back(L);
     }
   }
-  // A biased sensor: the autopilot holds the biased reading at the command,
-  // i.e. the true state at command - bias.
-  for (sim::DepthLeg& L : sc.legs) {
-    L.depth_m -= truth.depth_offset_m;
-    L.pitch_rad -= units::degToRad(truth.pitch_bias_deg);
-  }
   sc.ballast_error = truth.ballast_error;
-  sc.initial_depth_m = sc.legs.front().depth_m;
+  sc.initial_depth_m = sc.legs.front().depth_m - truth.depth_offset_m;
   sc.initial_speed_mps = 0.8;
-  const double duration = sim::scenarioDuration(sc);
-  if (truth.mass_drift_kg_per_h != 0.0) {
-    const double step = 10.0;
-    for (double t = step; t < duration; t += step)
-      sc.buoyancy_changes.push_back({t, -units::g0 * truth.mass_drift_kg_per_h * step / 3600.0});
-  }
+  applyTruthEffects(sc, truth, sim::scenarioDuration(sc));
   sim::SimOptions o;
   o.trace_interval_s = m.trace_interval_s;
   o.seed = m.seed;
@@ -78,15 +97,7 @@ MissionLog synthesizeAuvLog(const sim::SimVehicle& vehicle, const std::string& i
                 {"truth_roll_sensor_bias_deg", f(truth.roll_bias_deg)},
                 {"truth_depth_sensor_offset_m", f(truth.depth_offset_m)}};
   MissionLog log = sim::toMissionLog(tr, info);
-  auto shift = [&](const char* name, double d) {
-    if (LogChannel* c = log.find(name))
-      for (double& x : c->values) x += d;
-  };
-  shift("depth", truth.depth_offset_m);
-  shift("depth_cmd", truth.depth_offset_m);
-  shift("pitch", truth.pitch_bias_deg);
-  shift("pitch_cmd", truth.pitch_bias_deg);
-  shift("roll", truth.roll_bias_deg);
+  recordSensorBiases(log, truth);
   return log;
 }
 

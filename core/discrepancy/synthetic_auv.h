@@ -46,6 +46,14 @@ struct SyntheticAuvMission {
   bool default_noise = true;
 };
 
+// The truth effects on a vehicle model (hull, propeller torque, M_|q|q), on
+// a scenario (legs steered on a biased reading, the mass drift as buoyancy
+// steps over `duration_s`), and on its log (the biased readings recorded).
+// Shared with the HUGIN survey harness, which flies drawn truths.
+void applyTruthEffects(sim::VehicleModel& model, const SyntheticAuvTruth& truth);
+void applyTruthEffects(sim::Scenario& scenario, const SyntheticAuvTruth& truth, double duration_s);
+void recordSensorBiases(MissionLog& log, const SyntheticAuvTruth& truth);
+
 // `vehicle` is the analysis model (loadSimVehicle of the profile); the truth
 // is this model with the truth effects added.
 MissionLog synthesizeAuvLog(const sim::SimVehicle& vehicle, const std::string& vehicle_id, const SyntheticAuvTruth& truth,

@@ -10,6 +10,7 @@
 #include "analysis/analysis_report.h"
 #include "analysis/mission_analysis.h"
 #include "common/units.h"
+#include "discrepancy/synthetic_auv.h"
 #include "planning/next_mission_water.h"
 #include "planning/pre_mission_plan.h"
 #include "planning/trim_estimate.h"
@@ -42,10 +43,11 @@ struct Flown {
 
 Flown fly(const sim::VehicleModel& truth, const sim::DepthAutopilotConfig& ap, const sim::SurveyMission& m,
           const std::vector<MassItem>& installed, const sim::BallastError& err, std::uint64_t noise_seed,
-          const std::vector<double>& installed_kg) {
+          const std::vector<double>& installed_kg, const discrepancy::SyntheticAuvTruth& effect) {
   sim::Scenario sc = m.scenario;
   sc.extra_masses = installed;
   sc.ballast_error = err;
+  discrepancy::applyTruthEffects(sc, effect, sim::scenarioDuration(sc));
   sim::SimOptions opt = m.options;
   opt.seed = noise_seed;
   const sim::WaterColumn water = m.water();
@@ -53,6 +55,7 @@ Flown fly(const sim::VehicleModel& truth, const sim::DepthAutopilotConfig& ap, c
   Flown f;
   f.log = sim::toMissionLog(tr, {"hugin1000", "plan", "identification harness", noise_seed, 0, installed_kg, {sim::latitudeMetadata(m.latitude_deg)}});
   sim::applyDropouts(f.log, noise_seed);
+  discrepancy::recordSensorBiases(f.log, effect);
   f.mass_kg = tr.truth.mass_kg;
   f.cg_x_m = tr.truth.cg_x_m;
   f.cg_y_m = tr.truth.cg_y_m;
@@ -141,13 +144,14 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   const sim::SurveyMission m = sim::makeSurveyMission(seed, ranges);
   r.speeds = static_cast<int>(m.rpms.size());
   r.depths = static_cast<int>(m.depths_m.size());
-  const sim::VehicleModel truth = sim::truthModel(nominal_.model, r.truth);
+  sim::VehicleModel truth = sim::truthModel(nominal_.model, r.truth);
+  discrepancy::applyTruthEffects(truth, concealed);
   const std::vector<MassItem> installed = sim::installedWeights(profile_, kInstalled);
   // The drawn net buoyancy holds at the start of the mission.
   const sim::WaterSample w0 = m.water().at(m.scenario.initial_depth_m, 0.0);
   const double displaced0 = w0.density_kgm3 * truth.body.hull.volumeAt(w0.temperature_degC, w0.pressure_dbar);
   const sim::BallastError err = sim::truthBallastError(truth, installed, displaced0, r.truth);
-  const Flown f = fly(truth, nominal_.autopilot, m, installed, err, seed * 7 + 1, kInstalled);
+  const Flown f = fly(truth, nominal_.autopilot, m, installed, err, seed * 7 + 1, kInstalled, concealed);
 
   const auto t0 = std::chrono::steady_clock::now();
   const analysis::AnalysisReport rep = analyse(f, profile_, kInstalled, use_transients);
@@ -288,7 +292,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
     r.manoeuvre_flight = plan.calibration_manoeuvre->at("flight");
   sim::SurveyMission m2m = m2;
   if (fly_manoeuvre && plan.calibration_manoeuvre) r.manoeuvre_flown = appendManoeuvre(*plan.calibration_manoeuvre, op_depth, m2m);
-  const Flown f2 = fly(truth, nominal_.autopilot, m2m, sim::installedWeights(profile_, after), err, seed * 7 + 2, after);
+  const Flown f2 = fly(truth, nominal_.autopilot, m2m, sim::installedWeights(profile_, after), err, seed * 7 + 2, after, concealed);
   if (!dump_prefix.empty()) writeInterchangeCsv(f2.log, dump_prefix + "-2.csv");
   // Mission 2 analysed with mission 1 as history (the known move calibrates).
   analysis::AnalysisOptions a2;
@@ -308,7 +312,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   const auto [plan2, after2] = planFrom(rj2, after);
   r.two.planned_roll_deg = plan2.predicted.roll_deg;
   r.two.planned_net_kg = plan2.predicted.net_buoyancy_kg;
-  const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2);
+  const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2, concealed);
   judge(f3, analyse(f3, profile_, after2, use_transients), r.two);
   r.twice = true;
   r.net2_err_kg = rep2.net_buoyancy_kg.value - net2_truth;

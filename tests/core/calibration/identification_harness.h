@@ -13,6 +13,7 @@
 
 #include "analysis/analysis_report.h"
 #include "analysis/calibration_parameter.h"
+#include "discrepancy/synthetic_auv.h"
 #include "missionlog/mission_log.h"
 #include "sim/mission_plan.h"
 #include "sim/truth_draw.h"
@@ -80,6 +81,11 @@ class Harness {
   // manoeuvre (1 Hz) biased it by about 0.1 kg on some truths
   // (docs/decisions/analysis-calibration.md).
   bool fly_manoeuvre = false;
+  // An effect the analysis model lacks (hull compressibility, thermal
+  // expansion, mass drift, a pitch sensor bias, quadratic pitch damping), in
+  // every mission the truth flies: the model check's concealed-effect proof
+  // on drawn HUGIN truths (bench/hugin_concealed_bench.cpp). Default: none.
+  discrepancy::SyntheticAuvTruth concealed;
   // Called with the first log, its analysis and the truth at the report's
   // reference water (net kg, CG x mm): the bench runs the model check there
   // (the harness itself stays free of it).
