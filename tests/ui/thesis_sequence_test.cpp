@@ -33,9 +33,9 @@ using auv::testing::shot;
 
 namespace {
 
-// The cap only stops a hung test. The whole sequence takes about 150 s
-// alone under the parallel ctest, and on a 2-core machine also building a
-// fresh Debian root the model-check page's job was still queued after 240 s.
+// The cap only stops a hung test. The whole sequence takes about 5 s alone
+// and 50 s under the parallel ctest (it took 150-270 s before the workers
+// cleared the upper AVX state, docs/decisions/worker-avx-state.md).
 void waitWhile(const std::function<bool()>& busy) {
   QElapsedTimer t;
   t.start();
