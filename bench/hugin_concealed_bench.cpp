@@ -98,8 +98,8 @@ int main(int argc, char** argv) {
       const int otherBefore = t.other;
       for (const discrepancy::MissingPhysics& m : r.missing_physics) {
         const double effect = m.value - m.profile_value;
-        char b[96];
-        std::snprintf(b, sizeof b, " %s=%.3g+-%.2g", m.id.c_str(), effect, m.sigma);
+        char b[160];
+        std::snprintf(b, sizeof b, " %s=%.3g+-%.2g (calibration %.2g)", m.id.c_str(), effect, m.sigma, m.calibration_sigma);
         found += b;
         if (m.id != c.expected) ++t.other;
         if (m.id == c.expected) ++t.named, t.covered += std::abs(effect - c.truth) <= 2.0 * m.sigma;
@@ -111,6 +111,10 @@ int main(int argc, char** argv) {
                       0.3 * std::abs(c.truth);
       }
       if (verbose) {
+        std::string cal;
+        for (const discrepancy::CalibrationValue& k : r.calibration)
+          cal += " " + k.id + (k.from_analysis ? "(held)" : "") + "=" + std::to_string(k.value) + "+-" + std::to_string(k.sigma);
+        std::printf("      calibration:%s\n", cal.c_str());
         for (const discrepancy::CandidateReport& k : r.candidates)
           if (k.id == c.expected)
             std::printf("      %s alone %.3g +- %.2g (t %.1f, inclusion %.2f): %s\n", k.id.c_str(), k.value, k.sigma,

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/units.h"
+#include "discrepancy/held_shifts.h"
 
 namespace auv::discrepancy::detail {
 
@@ -32,43 +33,24 @@ std::string calibrationWords(const CalibrationValue& c) {
 // on 13, with the spread on 49 (docs/decisions/model-check-calibration.md).
 struct HeldSpread {
   double net_var = 0.0, x_var = 0.0, y_var = 0.0;
+  std::vector<double> term_var;  // per accepted term, in its fit unit
 };
-
-// The shifts are systematic, so a subsample of the fit's rows measures them:
-// both fits (unshifted and shifted) on the same rows, at most this many.
-constexpr std::size_t kSpreadRows = 2000;
 
 HeldSpread heldSpread(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, const std::vector<std::size_t>& accepted,
                       const Fit& fin) {
   const CheckModel& m = s.m;
   HeldSpread out;
-  std::vector<const CalibrationConstant*> held;
-  const std::vector<CalibrationConstant> constants = m.calibrationConstants();
-  for (const CalibrationConstant& k : constants) {
-    const auto j = static_cast<Eigen::Index>(k.index);
-    if (k.held_sigma > 0.0 && !(s.nHi[j] > s.nLo[j])) held.push_back(&k);  // held by its bounds
-  }
-  if (held.empty()) return out;
-  std::vector<std::uint32_t> rows;
-  const std::size_t stride = (fitRows.size() + kSpreadRows - 1) / kSpreadRows;
-  for (std::size_t i = 0; i < fitRows.size(); i += std::max<std::size_t>(1, stride)) rows.push_back(fitRows[i]);
-  const Fit f0 = rows.size() == fitRows.size() ? fin : fit(s, rows, accepted, fin.params);
-  const double net0 = m.netBuoyancyKg(f0.params);
-  const double x0 = units::mToMm(m.cgX(f0.params)), y0 = units::mToMm(m.cgY(f0.params));
-  for (const CalibrationConstant* k : held) {
-    const auto j = static_cast<Eigen::Index>(k->index);
-    FitSetup moved = s;
-    const double v = f0.params.nuisance[j] + k->held_sigma / k->display_scale;
-    moved.nLo[j] = moved.nHi[j] = v;
-    for (NuisancePrior& q : moved.priors)
-      if (q.index == k->index) q.mean = v;
-    Params start = f0.params;
-    start.nuisance[j] = v;
-    const Fit f = fit(moved, rows, accepted, start);
-    out.net_var += std::pow(m.netBuoyancyKg(f.params) - net0, 2);
+  out.term_var.assign(accepted.size(), 0.0);
+  const HeldShifts h = heldShifts(s, fitRows, accepted, fin.params);
+  const double net0 = m.netBuoyancyKg(h.unshifted);
+  const double x0 = units::mToMm(m.cgX(h.unshifted)), y0 = units::mToMm(m.cgY(h.unshifted));
+  for (const Params& p : h.shifted) {
+    for (std::size_t a = 0; a < accepted.size(); ++a)
+      out.term_var[a] += std::pow(p.terms[accepted[a]] - h.unshifted.terms[accepted[a]], 2);
+    out.net_var += std::pow(m.netBuoyancyKg(p) - net0, 2);
     if (m.hasCg()) {
-      out.x_var += std::pow(units::mToMm(m.cgX(f.params)) - x0, 2);
-      out.y_var += std::pow(units::mToMm(m.cgY(f.params)) - y0, 2);
+      out.x_var += std::pow(units::mToMm(m.cgX(p)) - x0, 2);
+      out.y_var += std::pow(units::mToMm(m.cgY(p)) - y0, 2);
     }
   }
   return out;
@@ -108,6 +90,7 @@ Fit jointRefit(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, con
   R.final_params = fin.params;
   R.accepted = TermValues{};
   for (std::size_t a : accepted) R.accepted[a] = fin.params.terms[a];
+  const HeldSpread held = heldSpread(s, fitRows, accepted, fin);
   for (auto& mp : found) {
     const std::size_t term = *findTerm(mp.id);
     const auto pos = std::find(accepted.begin(), accepted.end(), term) - accepted.begin();
@@ -115,6 +98,8 @@ Fit jointRefit(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, con
     mp.value = mp.profile_value + fin.params.terms[term] * lib[term].display_scale;
     mp.sigma = fin.sigma[s.nN + pos] * lib[term].display_scale;
     mp.sigma = std::max(mp.sigma, mp.split_half_sigma);  // model_check.h: the structure's share
+    mp.calibration_sigma = std::sqrt(held.term_var[static_cast<std::size_t>(pos)]) * std::abs(lib[term].display_scale);
+    mp.sigma = std::hypot(mp.sigma, mp.calibration_sigma);
   }
   for (int j = 0; j < s.nN; ++j) {
     R.nuisance.push_back(fin.params.nuisance[j]);
@@ -133,7 +118,6 @@ Fit jointRefit(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, con
     }
     R.net_buoyancy_sigma_kg = std::sqrt(var);
   }
-  const HeldSpread held = heldSpread(s, fitRows, accepted, fin);
   R.net_buoyancy_sigma_kg = std::sqrt(R.net_buoyancy_sigma_kg * R.net_buoyancy_sigma_kg + held.net_var);
   if (m.hasCg()) {
     R.has_cg = true;

@@ -57,7 +57,13 @@ LmResult levenbergMarquardt(const LmProblem& p, const Eigen::VectorXd& x0, const
   Eigen::MatrixXd J = forwardJacobian(p, x, r);
   for (int it = 0; it < o.max_iterations; ++it) {
     res.iterations = it + 1;
-    const Eigen::MatrixXd Js = J * S.asDiagonal();
+    // A parameter whose bounds meet is held: it takes no step. Left in the
+    // normal equations, the others' step assumes it moves, the clamp undoes
+    // that, and the damped retries stall after a token step (the model check's
+    // refits with a held constant shifted came back unmoved).
+    Eigen::MatrixXd Js = J * S.asDiagonal();
+    for (Eigen::Index j = 0; j < Js.cols(); ++j)
+      if (!(p.upper[j] > p.lower[j])) Js.col(j).setZero();
     const Eigen::MatrixXd A0 = Js.transpose() * Js;
     const Eigen::VectorXd g = Js.transpose() * r;
     bool improved = false;

@@ -48,6 +48,10 @@ struct ModelCheckOptions {
   // held-out equation error (weighted, the other half of the units) of at least min_eq_gain.
   double max_sim_loss = 0.06;
   double min_eq_gain = 0.05;
+  // A term must also stand out from what the held calibration (the analysis's
+  // groups, each within its sigma) could put into it: |increment| at least
+  // this many hypot(formal sigma, calibration_sigma).
+  double min_calibration_z = 2.0;
   double collinear_threshold = 0.95;  // reported as "cannot be told apart"
   double degenerate_r2 = 0.995;       // share of a regressor the ballast state explains beyond which the term is not tried
   double stlsq_threshold = 0.5;  // in units of each term's typical value (comparison only)
@@ -79,6 +83,10 @@ struct MissingPhysics {
   // (display unit): the spread the formal sigma misses where the model's
   // structure, not the noise, limits the fit. `sigma` is never below it.
   double split_half_sigma = 0.0;
+  // The value's spread from the calibration constants the check holds (the
+  // analysis's groups), each one of its sigmas up, in quadrature (display
+  // unit). `sigma` includes it.
+  double calibration_sigma = 0.0;
   Channel channel = Channel::kDepth;   // simulation channel it improves most
   double rms_before = 0.0, rms_after = 0.0;  // held-out simulation RMS on `channel`, display unit
   Message where;

@@ -46,6 +46,7 @@ nlohmann::json toJson(const ModelCheckResult& r) {
                         {"unit", m.unit},
                         {"sigma", num(m.sigma)},
                         {"split_half_sigma", num(m.split_half_sigma)},
+                        {"calibration_sigma", num(m.calibration_sigma)},
                         {"rms_before", num(m.rms_before)},
                         {"rms_after", num(m.rms_after)},
                         {"channel", channelName(m.channel)},

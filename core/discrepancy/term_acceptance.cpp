@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "discrepancy/held_shifts.h"
 #include "discrepancy/residual_statistics.h"
 
 namespace auv::discrepancy::detail {
@@ -68,6 +69,29 @@ HeldOutTrial heldOutTrial(const FitSetup& s, const HeldOutScorer& scorer, HeldOu
   return t;
 }
 
+// The trial term's fitted increment against what the held calibration could
+// put into it: the formal sigma and the spread over the held constants, each
+// one of its sigmas up (held_shifts.h), in quadrature.
+struct CalibrationTest {
+  Fit full;
+  double value = 0.0, formal = 0.0, spread = 0.0;
+  double z() const { return std::abs(value) / std::max(std::hypot(formal, spread), 1e-300); }
+};
+
+CalibrationTest calibrationTest(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, const std::vector<std::size_t>& trial,
+                                const Params& start) {
+  CalibrationTest t;
+  const std::size_t term = trial.back();
+  t.full = fit(s, fitRows, trial, start);
+  t.value = t.full.params.terms[term];
+  t.formal = t.full.sigma[s.nN + static_cast<Eigen::Index>(trial.size() - 1)];
+  const HeldShifts h = heldShifts(s, fitRows, trial, t.full.params);
+  double var = 0.0;
+  for (const Params& p : h.shifted) var += std::pow(p.terms[term] - h.unshifted.terms[term], 2);
+  t.spread = std::sqrt(var);
+  return t;
+}
+
 }  // namespace
 
 TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& fitRows, const HeldOutScorer& scorer,
@@ -117,6 +141,29 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
       c.status = buf;
       continue;
     }
+    // Held-out halves share the held calibration, so a term that only stands
+    // in for a held group one sigma off passes them; it must also stand out
+    // from that (on drawn HUGIN truths the false terms were buoyancy laws).
+    const CalibrationTest ct = calibrationTest(s, fitRows, trial, st);
+    // A fit pinned at the plausible range's end stands in for something else
+    // (seen: M_|q|q x6 on a control log); there its spread cannot be measured.
+    const double edge = 1e-3 * lib[term].typical;
+    if (ct.value <= lib[term].lower + edge || ct.value >= lib[term].upper - edge) {
+      std::snprintf(buf, sizeof buf, "fitted at the end of its plausible range (%.3g, range %.3g to %.3g)",
+                    ct.value * lib[term].display_scale, lib[term].lower * lib[term].display_scale,
+                    lib[term].upper * lib[term].display_scale);
+      c.status = buf;
+      continue;
+    }
+    if (ct.z() < o.min_calibration_z) {
+      const double d = std::abs(lib[term].display_scale);
+      std::snprintf(buf, sizeof buf,
+                    "within what the held calibration's uncertainty can put into it (%.3g +- %.2g formal, +- %.2g from "
+                    "the held constants: %.1f sigma < %.1f)",
+                    ct.value * lib[term].display_scale, ct.formal * d, ct.spread * d, ct.z(), o.min_calibration_z);
+      c.status = buf;
+      continue;
+    }
     const bool simBetter = t.sim_better;
     const double before = t.before, after = t.after, eqBefore = t.eq_before, eqAfter = t.eq_after;
     c.status = "accepted";
@@ -159,9 +206,7 @@ TermAcceptance acceptTerms(const FitSetup& s, const std::vector<std::uint32_t>& 
       if (std::find(mp.confused_with.begin(), mp.confused_with.end(), rv.id) == mp.confused_with.end()) mp.confused_with.push_back(rv.id);
     out.found.push_back(mp);
     accepted.push_back(term);
-    // Provisional value for the next step's start.
-    const Fit f = fit(s, fitRows, accepted, st);
-    R.accepted = f.params.terms;
+    R.accepted = ct.full.params.terms;  // provisional values for the next step's start
     hoCur = shortH ? scorer.score(accepted, st) : ho;  // the next term is judged on the whole log again
   }
   return out;

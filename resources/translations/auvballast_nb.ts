@@ -1392,8 +1392,8 @@
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" line="81"/>
-        <source>The vehicle constants fitted together with the ballast state. &quot;This log&quot;: the log narrowed it; &quot;stayed at the prior&quot;: the log could not tell, the profile&apos;s value and its uncertainty stand.</source>
-        <translation>Fartøykonstantene tilpasset sammen med ballasttilstanden. «Denne loggen»: loggen snevret den inn; «ble ved forhåndsverdien»: loggen kunne ikke avgjøre det, og profilens verdi og usikkerhet står.</translation>
+        <source>The vehicle constants fitted together with the ballast state. &quot;This log&quot;: the log narrowed it; &quot;stayed at the prior&quot;: the log could not tell, the profile&apos;s value and its uncertainty stand; &quot;the analysis, held&quot;: the model check kept the same log&apos;s analysis&apos;s value and σ.</source>
+        <translation>Fartøykonstantene tilpasset sammen med ballasttilstanden. «Denne loggen»: loggen snevret den inn; «ble ved forhåndsverdien»: loggen kunne ikke avgjøre det, og profilens verdi og usikkerhet står; «analysens, holdt»: modellkontrollen beholdt verdien og σ fra analysen av den samme loggen.</translation>
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" line="90"/>
@@ -1465,6 +1465,11 @@
         <location filename="../../ui/widgets/calibration_table.cpp" line="149"/>
         <source>this log</source>
         <translation>denne loggen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="152"/>
+        <source>the analysis, held</source>
+        <translation>analysens, holdt</translation>
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" line="149"/>

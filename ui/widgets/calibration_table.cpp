@@ -36,7 +36,7 @@ Shown shownUnit(const std::string& id, const std::string& unit) {
 }
 
 CalibrationRow makeRow(const std::string& id, const std::string& unit, double value, double sigma, double profile,
-                   bool identified) {
+                       bool identified, bool from_analysis) {
   Shown s = shownUnit(id, unit);
   // A unit that is a sentence ("N m at 100 rpm, bollard (J = 0)") would take
   // the table's width: it goes to the row's tooltip.
@@ -55,6 +55,7 @@ CalibrationRow makeRow(const std::string& id, const std::string& unit, double va
               : s.relative             ? CalibrationTable::tr("%1 = profile").arg(sig(profile, 3))
                                        : sig(profile * s.scale, 3);
   r.identified = identified;
+  r.from_analysis = from_analysis;
   r.unit_note = unit_note;
   return r;
 }
@@ -79,7 +80,8 @@ CalibrationTable::CalibrationTable(QWidget* parent) : QTableWidget(0, 4, parent)
   setSelectionMode(QAbstractItemView::NoSelection);
   setFocusPolicy(Qt::NoFocus);  // read only: Tab goes on to the next field
   setToolTip(tr("The vehicle constants fitted together with the ballast state. \"This log\": the log narrowed "
-                "it; \"stayed at the prior\": the log could not tell, the profile's value and its uncertainty stand."));
+                "it; \"stayed at the prior\": the log could not tell, the profile's value and its uncertainty stand; "
+                "\"the analysis, held\": the model check kept the same log's analysis's value and σ."));
 }
 
 void CalibrationTable::showRows(const std::vector<CalibrationRow>& rows) {
@@ -101,7 +103,7 @@ void CalibrationTable::showRows(const std::vector<CalibrationRow>& rows) {
     value->setToolTip(r.unit_note);
     setItem(i, 1, value);
     setItem(i, 2, new QTableWidgetItem(r.profile));
-    setItem(i, 3, new QTableWidgetItem(source(r.identified)));
+    setItem(i, 3, new QTableWidgetItem(source(r)));
   }
 }
 
@@ -111,14 +113,15 @@ std::vector<CalibrationRow> CalibrationTable::rowsFromJson(const nlohmann::json&
   for (const auto& c : list) {
     if (!c.is_object() || !c.contains("id") || !c["id"].is_string()) continue;
     out.push_back(makeRow(c["id"].get<std::string>(), c.value("unit", std::string()), num(c, "value"), num(c, "sigma"),
-                      num(c, "profile_value"), c.value("identified", false)));
+                      num(c, "profile_value"), c.value("identified", false),
+                          c.value("from_analysis", false)));
   }
   return out;
 }
 
 std::vector<CalibrationRow> CalibrationTable::rowsOf(const std::vector<discrepancy::CalibrationValue>& list) {
   std::vector<CalibrationRow> out;
-  for (const auto& c : list) out.push_back(makeRow(c.id, c.unit, c.value, c.sigma, c.profile_value, c.identified));
+  for (const auto& c : list) out.push_back(makeRow(c.id, c.unit, c.value, c.sigma, c.profile_value, c.identified, c.from_analysis));
   return out;
 }
 
@@ -145,14 +148,15 @@ QString CalibrationTable::nameOf(const std::string& id) {
   return words;
 }
 
-QString CalibrationTable::source(bool identified) {
-  return identified ? tr("this log") : tr("stayed at the prior");
+QString CalibrationTable::source(const CalibrationRow& r) {
+  if (r.from_analysis) return tr("the analysis, held");
+  return r.identified ? tr("this log") : tr("stayed at the prior");
 }
 
 QStringList CalibrationTable::lines(const std::vector<CalibrationRow>& rows) {
   QStringList out;
   for (const auto& r : rows)
-    out << tr("%1: %2 (profile %3); %4").arg(r.name, r.value, r.profile, source(r.identified)) +
+    out << tr("%1: %2 (profile %3); %4").arg(r.name, r.value, r.profile, source(r)) +
                (r.unit_note.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(r.unit_note));
   return out;
 }

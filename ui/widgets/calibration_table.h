@@ -22,6 +22,7 @@ struct CalibrationRow {
   QString name, value, profile;
   QString unit_note;  // a long unit, said in the tooltip (and the work order) instead of the cell
   bool identified = false;
+  bool from_analysis = false;  // held by the model check at the same log's analysis's value
 };
 
 class CalibrationTable : public QTableWidget {
@@ -45,7 +46,8 @@ class CalibrationTable : public QTableWidget {
   // The plan's after_move_expected_sigma in one sentence (empty when unset):
   // the move itself calibrates the next mission's analysis.
   static QString afterMoveLine(std::optional<double> net_sigma_kg, std::optional<double> x_sigma_m);
-  static QString source(bool identified);
+  // The "From" column: this log, the prior, or (in the model check) the analysis's, held.
+  static QString source(const CalibrationRow& r);
 };
 
 }  // namespace auv::ui

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "discrepancy/model_check.h"
@@ -240,6 +242,23 @@ TEST(Identification, AModelCheckFitThePlanAdoptsCoversTheTruth) {
   EXPECT_EQ(called, 1);
 }
 
+// The model check as the CLI and the wizard run it (with the log's analysis)
+// on the first log of drawn truth `seed`; `expect` sees its result.
+void checkFirstLogWithItsAnalysis(
+    std::uint64_t seed,
+    const std::function<void(const discrepancy::ModelCheckResult&, const analysis::AnalysisReport&, double net_truth)>& expect) {
+  Harness h;
+  int called = 0;
+  h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double) {
+    ++called;
+    discrepancy::CheckSetup setup;
+    setup.analysis = &rep;
+    expect(discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, h.profile(), AUV_RESOURCE_DIR, setup)), rep, net_truth);
+  };
+  h.run(seed, false);
+  EXPECT_EQ(called, 1);
+}
+
 // Item 6: the same log checked the way the CLI and the wizard check it, with
 // its analysis (CheckSetup::analysis): the check holds the analysis's
 // calibrated groups (their ids, values and sigmas), states its net buoyancy
@@ -247,14 +266,7 @@ TEST(Identification, AModelCheckFitThePlanAdoptsCoversTheTruth) {
 // 0.15 kg of the truth (profile only: a false pitch-sensor bias and 1.2 kg;
 // held: 5.24 against 5.19).
 TEST(Identification, TheModelCheckHoldsTheAnalysisCalibration) {
-  Harness h;
-  int called = 0;
-  h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double) {
-    ++called;
-    discrepancy::CheckSetup setup;
-    setup.analysis = &rep;
-    const discrepancy::ModelCheckResult r =
-        discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, h.profile(), AUV_RESOURCE_DIR, setup));
+  checkFirstLogWithItsAnalysis(1101, [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double net_truth) {
     EXPECT_TRUE(r.missing_physics.empty()) << r.missing_physics.front().id;
     EXPECT_NEAR(r.net_buoyancy_kg, net_truth, 0.15);
     // Its sigma holds the held groups' spread (joint_refit.cpp): the fit's
@@ -287,9 +299,23 @@ TEST(Identification, TheModelCheckHoldsTheAnalysisCalibration) {
       }
     }
     EXPECT_EQ(held, 3);
-  };
-  h.run(1101, false);
-  EXPECT_EQ(called, 1);
+  });
+}
+
+// A drawn truth with no concealed effect on which the held check used to name
+// quadratic pitch damping at x6 of the profile, the end of its plausible range
+// (hugin_concealed_bench, control 5105): a fit pinned there stands in for the
+// calibration's error, and its spread over the held constants cannot even be
+// measured. The check now names nothing and says why.
+TEST(Identification, TheModelCheckRefusesATermPinnedAtItsRange) {
+  checkFirstLogWithItsAnalysis(5105, [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport&, double net_truth) {
+    EXPECT_TRUE(r.missing_physics.empty()) << r.missing_physics.front().id;
+    EXPECT_LE(std::abs(r.net_buoyancy_kg - net_truth), 2.0 * r.net_buoyancy_sigma_kg);
+    bool refused = false;
+    for (const discrepancy::CandidateReport& c : r.candidates)
+      refused = refused || (c.id == "quadratic_pitch_damping" && c.status.rfind("fitted at the end of its plausible range", 0) == 0);
+    EXPECT_TRUE(refused);
+  });
 }
 
 }  // namespace

@@ -105,8 +105,9 @@ inline DrawnOutcome runDrawnCase(const Delphin2Nominal& d, const DrawnCase& c, c
     ++o.logs;
     std::string found;
     for (const MissingPhysics& m : r.missing_physics) {
-      char b[96];
-      std::snprintf(b, sizeof b, " %s=%.3g+-%.2g (halves %.2g)", m.id.c_str(), effectOf(m), m.sigma, m.split_half_sigma);
+      char b[160];
+      std::snprintf(b, sizeof b, " %s=%.3g+-%.2g (halves %.2g, calibration %.2g)", m.id.c_str(), effectOf(m), m.sigma,
+                    m.split_half_sigma, m.calibration_sigma);
       found += b;
       if (m.id == "propeller_torque") ++o.torque_missing;
       if (m.id != c.expected) ++o.false_terms;

@@ -3,6 +3,7 @@
 // linear problem with one true term, and the localisation's words.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <random>
 
@@ -84,6 +85,38 @@ Linear makeLinear(double noise, unsigned seed) {
     L.unit[static_cast<std::size_t>(i)] = i / 100;
   }
   return L;
+}
+
+// A parameter whose bounds meet is held (the model check's calibration
+// constants held at the analysis's values, and its refits with one of them
+// shifted). The others must reach their optimum given it, even when they are
+// nearly collinear with it: the linear least-squares solution is the oracle.
+TEST(LevenbergMarquardt, AHeldParameterLeavesTheOthersAtTheirConditionalOptimum) {
+  const int n = 200;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  Eigen::VectorXd x(n), z(n), y(n);
+  for (int i = 0; i < n; ++i) {
+    x[i] = -1.0 + 2.0 * i / (n - 1.0);
+    z[i] = x[i] + 0.05 * std::sin(7.0 * x[i]);  // 99.9 % collinear with x
+    y[i] = 1.5 * x[i] + 2.0 * z[i] + 0.3 + noise(rng);
+  }
+  const double heldB = 2.4;  // 0.4 off the value the data would give
+  LmProblem p;
+  p.residuals = [&](const Eigen::VectorXd& q, Eigen::VectorXd& r) { r = q[0] * x + q[1] * z + Eigen::VectorXd::Constant(n, q[2]) - y; };
+  p.scale = Eigen::Vector3d(1.0, 1.0, 0.1);
+  p.lower = Eigen::Vector3d(-10.0, heldB, -10.0);
+  p.upper = Eigen::Vector3d(10.0, heldB, 10.0);
+  Eigen::MatrixXd A(n, 2);
+  A.col(0) = x;
+  A.col(1).setOnes();
+  const Eigen::Vector2d oracle = A.colPivHouseholderQr().solve(y - heldB * z);
+  // Started where a fit with the constant at its unshifted value ended.
+  const LmResult r = levenbergMarquardt(p, Eigen::Vector3d(1.5, heldB, 0.3));
+  EXPECT_DOUBLE_EQ(r.x[1], heldB);
+  EXPECT_NEAR(r.x[0], oracle[0], 1e-6);
+  EXPECT_NEAR(r.x[2], oracle[1], 1e-6);
+  EXPECT_GT(std::abs(oracle[0] - 1.5), 0.3);  // the held shift does move the others
 }
 
 TEST(SparseSelection, StepwiseAndStlsqFindTheOneTrueColumn) {
