@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
     else if (std::atoi(argv[i]) > 0)
       n = std::atoi(argv[i]);
     else {
-      std::fprintf(stderr, "usage: hugin_concealed_bench [truths per case] [--seed S] [-v] [--case LABEL-PART]\n");
+      std::fprintf(stderr, "usage: hugin_concealed_bench [truths per case] [--seed S] [-v] [--case LABEL-PART] [--without-analysis]\n");
       return 2;
     }
   }
