@@ -115,8 +115,13 @@ int main(int argc, char** argv) {
         for (const discrepancy::CalibrationValue& k : r.calibration)
           cal += " " + k.id + (k.from_analysis ? "(held)" : "") + "=" + std::to_string(k.value) + "+-" + std::to_string(k.sigma);
         std::printf("      calibration:%s\n", cal.c_str());
+        std::string law;
+        for (const analysis::CalibrationParameter& q : rep.calibration)
+          if (q.id == "hull_compressibility" || q.id == "thermal_expansion")
+            law += " " + q.id + "=" + std::to_string(q.value) + "+-" + std::to_string(q.sigma);
+        std::printf("      analysis hull law:%s\n", law.c_str());
         for (const discrepancy::CandidateReport& k : r.candidates)
-          if (k.id == c.expected)
+          if (k.id == c.expected || (c.expected.empty() && (k.id == "thermal_expansion" || k.id == "hull_compressibility")))
             std::printf("      %s alone %.3g +- %.2g (t %.1f, inclusion %.2f): %s\n", k.id.c_str(), k.value, k.sigma,
                         k.t_value, k.inclusion_probability, k.status.c_str());
       }

@@ -184,6 +184,7 @@ int main(int argc, char** argv) {
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;
   int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0, twice = 0, asked = 0, flown = 0;
   std::map<std::string, int> identified;
+  int laws_used = 0;
   ModelCheckTally mc;
   if (model_checks > 0)
     h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double x_truth) {
@@ -216,6 +217,9 @@ int main(int argc, char** argv) {
                                  .c_str()
                            : envelopeTags(r).c_str());
     for (const auto& q : r.calibration) identified[q.id] += q.identified ? 1 : 0;
+    bool lawsUsed = false;  // the truths fly the profile's hull law and mass: each kept is a false one
+    for (const auto& q : r.calibration) lawsUsed = lawsUsed || (q.id == "mass_drift" && q.used);
+    laws_used += lawsUsed ? 1 : 0;
     if (r.known) {
       ++known;
       en.push_back(std::abs(r.net_err_kg));
@@ -264,7 +268,8 @@ int main(int argc, char** argv) {
               quantile(zn, 0.5), quantile(zn, 0.9), quantile(zx, 0.5), quantile(zx, 0.9));
   std::printf("  identified by the log (of %d):", truths);
   for (const auto& [id, n] : identified) std::printf(" %s %d,", id.c_str(), n);
-  std::printf("\n");
+  std::printf("\n  buoyancy laws (hull law, mass drift) kept as significant: %d of %d (the truths have the profile's)\n",
+              laws_used, truths);
   if (loop)
     std::printf("  second mission, joint with the first (history): net %.3f / %.3f kg (coverage %d of %zu), "
                 "CG x %.2f / %.2f mm (coverage %d of %zu), median / p90\n",

@@ -16,6 +16,15 @@ nlohmann::json num(double v) {
   return std::round(v * 1e6) / 1e6;
 }
 
+// Six significant digits: calibrated constants span 1e-6 1/dbar (a hull's
+// compressibility) to thousands, where six decimals would erase the small ones.
+nlohmann::json sig6(double v) {
+  if (!std::isfinite(v)) return nullptr;
+  if (v == 0.0) return 0.0;
+  const double k = std::pow(10.0, 5 - static_cast<int>(std::floor(std::log10(std::abs(v)))));
+  return std::round(v * k) / k;
+}
+
 nlohmann::json ci(const MeanEstimate& m) { return m.valid() ? num(m.ci95) : nlohmann::json(nullptr); }
 
 std::string fmt(const char* f, double v) {
@@ -121,9 +130,9 @@ nlohmann::json toJson(const AnalysisReport& r) {
   j["notes"] = r.notes;
   nlohmann::json cal = nlohmann::json::array();
   for (const CalibrationParameter& q : r.calibration)
-    cal.push_back({{"id", q.id}, {"value", num(q.value)}, {"unit", q.unit}, {"sigma", num(q.sigma)},
-                   {"profile_value", num(q.profile_value)}, {"prior_sigma", num(q.prior_sigma)},
-                   {"identified", q.identified}});
+    cal.push_back({{"id", q.id}, {"value", sig6(q.value)}, {"unit", q.unit}, {"sigma", sig6(q.sigma)},
+                   {"profile_value", sig6(q.profile_value)}, {"prior_sigma", sig6(q.prior_sigma)},
+                   {"identified", q.identified}, {"used", q.used}});
   j["calibration"] = cal;
   j["details"] = r.details;
   return j;

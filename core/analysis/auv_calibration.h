@@ -38,6 +38,20 @@ struct CalibrationPriors {
   double munk_factor = 0.5, munk_sigma = 0.5;
   double elevator_offset_sigma_deg = 2.0;
   double bg_m = 0.02, bg_sigma_m = 0.005;
+  // The hull law's two constants (issue 11): the profile's values, and
+  // priors on the vehicle's. A HUGIN-class hull's compressibility (foam,
+  // free-flooded sections) and thermal expansion are rarely measured: the
+  // sigmas are what an unmeasured hull's may plausibly be off by (a foam
+  // hull's kappa 3-10e-6 1/dbar, aluminium's alpha 7e-5 1/degC). Each
+  // segment's levers (hull_law_levers.h) let the depths and waters flown
+  // narrow them.
+  double compressibility_per_dbar = 0.0, thermal_expansion_per_degC = 0.0;
+  double compressibility_sigma_per_dbar = 5e-6, thermal_expansion_sigma_per_degC = 1e-4;
+  // A mass change over the mission (water uptake of the foam, fouling, a lost piece).
+  double mass_drift_sigma_kg_per_h = 0.1;
+  // The fitted buoyancy laws replace the profile's only at this chi2 of the
+  // three (3 dof, 99 %); below it the profile's laws are held.
+  double buoyancy_law_chi2 = 11.34;
 };
 
 // One steady segment: speed, pitch rad, roll rad, elevator deg, depth rate
@@ -53,10 +67,18 @@ struct CalibrationSegment {
   // Its known mass change is inside buoyancy_change_n.
   double weight_n = 0.0;  // 0 = the current mission's
   double moment_offset_nm = 0.0;
+  // d buoyancy_change_n / d kappa [N dbar], / d alpha [N degC] and / d drift
+  // [N per kg/h: -g hours from the log's reference time] (0 = none).
+  double compressibility_lever_n = 0.0, thermal_lever_n = 0.0, drift_lever_n = 0.0;
 };
 
 // kPitchDamping (M_q scale) only acts in the transients; steady legs leave it at its prior.
-enum CalibrationIndex { kNet = 0, kXg, kHeave, kPitchUw, kCrossflow, kPlanes, kPlaneOffset, kBg, kPitchDamping, kCalibrationCount };
+// The buoyancy laws last (kCompressibility on): the vehicle's hull law minus
+// the profile's, and its mass drift in kg/h.
+enum CalibrationIndex {
+  kNet = 0, kXg, kHeave, kPitchUw, kCrossflow, kPlanes, kPlaneOffset, kBg, kPitchDamping,
+  kCompressibility, kThermalExpansion, kMassDrift, kCalibrationCount
+};
 
 // Whitened output-error residuals of the log's transients at the parameters
 // p (auv_transient_fit.h); empty = steady legs only.
@@ -89,6 +111,10 @@ struct SteadyCalibration {
   // false: with their scatter the transients knew less than the steady
   // segments (a wider net buoyancy or CG x sigma), and p, cov are the steady ones.
   bool transients_kept = false;
+  // The buoyancy laws' change from the profile's, free: its chi2 from zero,
+  // and whether it was significant and so used (else the profile's are held).
+  double buoyancy_law_chi2 = 0.0;
+  bool buoyancy_law_fitted = false;
 };
 
 // Nominal linear pitch-moment derivative m_uw at density rho for a Munk factor.

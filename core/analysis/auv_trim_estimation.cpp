@@ -345,6 +345,12 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
   }
   pri.bg_m = m.BG;
   pri.bg_sigma_m = ctx.bg_measured_m ? ctx.bg_measured_sigma_m : ctx.bg_profile_rel_sigma * m.BG;
+  pri.compressibility_per_dbar = ctx.hull_compressibility_per_dbar;
+  pri.thermal_expansion_per_degC = ctx.hull_thermal_expansion_per_degC;
+  pri.compressibility_sigma_per_dbar = std::max(pri.compressibility_sigma_per_dbar, 0.5 * std::abs(pri.compressibility_per_dbar));
+  pri.thermal_expansion_sigma_per_degC =
+      std::max(pri.thermal_expansion_sigma_per_degC, 0.5 * std::abs(pri.thermal_expansion_per_degC));
+  pri.mass_drift_sigma_kg_per_h = std::max(pri.mass_drift_sigma_kg_per_h, 1e-4 * ctx.weight_n / units::g0);
   std::vector<CalibrationSegment> cs;
   for (std::size_t j = 0; j < meas.size(); ++j) {
     const SteadySegmentMeans& g = segments[seg_index[j]];
@@ -356,6 +362,9 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     c.regressors = g.regressors;
     c.weight_n = g.weight_n;
     c.moment_offset_nm = g.moment_offset_nm;
+    c.compressibility_lever_n = g.compressibility_lever_n;
+    c.thermal_lever_n = g.thermal_lever_n;
+    c.drift_lever_n = g.drift_lever_n;
     cs.push_back(c);
   }
   std::size_t history_used = 0;
@@ -370,6 +379,9 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     c.regressors = g.regressors;
     c.weight_n = g.weight_n;
     c.moment_offset_nm = g.moment_offset_nm;
+    c.compressibility_lever_n = g.compressibility_lever_n;
+    c.thermal_lever_n = g.thermal_lever_n;
+    c.drift_lever_n = g.drift_lever_n;
     cs.push_back(c);
     ++history_used;
   }

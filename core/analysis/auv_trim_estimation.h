@@ -31,6 +31,15 @@ struct SteadySegmentMeans {
   double density_kgm3 = std::numeric_limits<double>::quiet_NaN();
   double buoyancy_change_n = 0.0;
   double buoyancy_n = std::numeric_limits<double>::quiet_NaN();  // rho_i V_i g, absolute
+  // The segment's mean pressure and temperature (NaN = not logged): the
+  // calibration's levers on the hull law (hullLawLevers), which the
+  // profile may have wrong.
+  double pressure_dbar = std::numeric_limits<double>::quiet_NaN();
+  double temperature_degC = std::numeric_limits<double>::quiet_NaN();
+  // d buoyancy_change_n / d(extra compressibility) [N dbar], / d(extra
+  // thermal expansion) [N degC] and / d(mass drift) [N per kg/h]: set by
+  // the caller (0 = none).
+  double compressibility_lever_n = 0.0, thermal_lever_n = 0.0, drift_lever_n = 0.0;
   // Averaged legs (averaged_legs.h): the cycle means of the balance's
   // products (auv_steady_model.h); unset = a steady window.
   std::optional<BalanceRegressors> regressors = std::nullopt;
@@ -49,6 +58,7 @@ struct AuvTrimContext {
   std::optional<double> bg_measured_m;  // --bg-mm: needed for CG y
   double bg_profile_m = 0.0;            // used for the small BG sin(theta) term of x
   double bg_profile_rel_sigma = 0.25;
+  double hull_compressibility_per_dbar = 0.0, hull_thermal_expansion_per_degC = 0.0;  // the profile's hull law
   double bg_measured_sigma_m = 0.0005;  // a roll test's accuracy
   // Prior width of every hydrodynamic derivative group; unset = 30 % and an
   // unknown Munk structure (0.5 +- 0.5) unless the profile states it; set

@@ -11,6 +11,9 @@ struct CalibrationParameter {
   double prior_value = 0.0, prior_sigma = 0.0;
   double profile_value = 0.0;
   bool identified = false;  // the log narrowed it: posterior sigma below half the prior sigma
+  // false: reported for what the log says, but the estimate held the
+  // profile's value (the hull law when its change was not significant).
+  bool used = true;
 };
 
 }  // namespace auv::analysis

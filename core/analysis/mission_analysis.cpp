@@ -10,6 +10,7 @@
 #include "analysis/auv_steady_model.h"
 #include "analysis/averaged_legs.h"
 #include "analysis/flight_envelope.h"
+#include "analysis/hull_law_levers.h"
 #include "analysis/auv_transient_fit.h"
 #include "analysis/transient_replay.h"
 #include "analysis/auv_trim_estimation.h"
@@ -245,6 +246,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     const double Tref = water.T.valid() ? water.T.mean : v.hull.reference_temperature_degC;
     const double pref = water.p.valid() ? water.p.mean : 0.0;
     const double Bref = rho * v.hull.volumeAt(Tref, pref);  // kg
+    const HullLawReference hullRef{rho, Tref, pref};
     const std::vector<double> thrusterRpm = thrusterRpmAboveDeadband(log, v, win);
     for (std::size_t w = 0; w < nw; ++w) {
       means[w] = {win[w].start_s, win[w].end_s, speed.at(w), pitch.at(w), roll.at(w), elev.at(w), zRate.at(w), rpm.at(w)};
@@ -256,8 +258,12 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
         means[w].density_kgm3 = water.win_rho[w];
         means[w].buoyancy_n = units::g0 * water.win_rho[w] * v.hull.volumeAt(Ti, pi);
         means[w].buoyancy_change_n = means[w].buoyancy_n - units::g0 * Bref;
+        means[w].pressure_dbar = pi;
+        means[w].temperature_degC = Ti;
+        setHullLawLevers(v.hull, hullRef, means[w]);
       }
     }
+    setDriftLevers(means);
     AuvTrimContext ctx;
     ctx.profile_torque_nm_per_100rpm2 = profileTorqueAt100Rpm(v, rho);
     ctx.propeller = propellerLawFromProfile(v);
@@ -267,6 +273,8 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     ctx.bg_measured_m = o.bg_m;
     ctx.bg_profile_m = v.bg_m;
     ctx.bg_profile_rel_sigma = o.bg_profile_rel_sigma;
+    ctx.hull_compressibility_per_dbar = v.hull.compressibility_per_dbar;
+    ctx.hull_thermal_expansion_per_degC = v.hull.thermal_expansion_per_degC;
     ctx.coefficient_rel_sigma = o.coefficient_rel_sigma;
     ctx.log_has_speed = hasSamples(log, "speed");
     ctx.log_has_elevator = hasSamples(log, "elevator");
@@ -291,6 +299,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
         s.weight_n = (v.mass_kg + then) * units::g0;
         s.moment_offset_nm = -moment;
         s.from_history = true;
+        setHullLawLevers(v.hull, hullRef, s);
         ctx.history.push_back(s);
       }
     }

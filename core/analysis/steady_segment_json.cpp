@@ -40,6 +40,8 @@ nlohmann::json steadySegmentsJson(const std::vector<SteadySegmentMeans>& segment
                  {"prop_rpm", meanJson(s.prop_rpm)},
                  {"density_kgm3", std::isfinite(s.density_kgm3) ? nlohmann::json(s.density_kgm3) : nlohmann::json(nullptr)},
                  {"buoyancy_n", std::isfinite(s.buoyancy_n) ? nlohmann::json(s.buoyancy_n) : nlohmann::json(nullptr)}});
+    if (std::isfinite(s.pressure_dbar)) a.back()["pressure_dbar"] = s.pressure_dbar;
+    if (std::isfinite(s.temperature_degC)) a.back()["temperature_degC"] = s.temperature_degC;
     if (const auto& r = s.regressors)
       a.back()["cycle_regressors"] = {{"cc", r->cc},     {"sin_theta", r->sin_theta}, {"au_w", r->au_w},
                                       {"u_w", r->u_w},   {"aw_w", r->aw_w},           {"au_u", r->au_u},
@@ -64,6 +66,9 @@ std::vector<SteadySegmentMeans> steadySegmentsFromJson(const nlohmann::json& j, 
       *field = meanFrom(e.contains(key) ? e[key] : nlohmann::json(nullptr), at + "." + key);
     s.density_kgm3 = numberOr(e, "density_kgm3", s.density_kgm3);
     s.buoyancy_n = numberOr(e, "buoyancy_n", s.buoyancy_n);
+    // Rows written before the hull-law levers have neither (no lever).
+    s.pressure_dbar = numberOr(e, "pressure_dbar", s.pressure_dbar);
+    s.temperature_degC = numberOr(e, "temperature_degC", s.temperature_degC);
     if (e.contains("cycle_regressors") && e["cycle_regressors"].is_object()) {
       const nlohmann::json& r = e["cycle_regressors"];
       BalanceRegressors g;

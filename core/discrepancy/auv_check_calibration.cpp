@@ -144,6 +144,17 @@ std::vector<CalibrationConstant> AuvCheckModel::calibrationConstants() const {
   return out;
 }
 
+std::vector<HeldTermValue> AuvCheckModel::heldTerms() const {
+  std::vector<HeldTermValue> out;
+  for (const AuvCheckOptions::HeldTerm& h : opt_.held_terms) {
+    const auto k = findTerm(h.id);
+    if (!k) continue;
+    const PhysicsTerm& t = termLibrary()[*k];
+    out.push_back({h.id, std::string(t.unit), std::string(t.parameter), h.value, h.sigma, h.profile_value, h.prior_sigma});
+  }
+  return out;
+}
+
 double AuvCheckModel::profileTermValue(std::size_t term) const {
   const PhysicsTerm& t = termLibrary()[term];
   double v = baseline_[term] * t.display_scale;

@@ -49,6 +49,9 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
                            "thruster_aft_rpm", "depth_cmd", "pitch_cmd"})
     if (const LogChannel* c = log.find(name)) log_.channels.push_back(*c);
   baseline_ = acceptedTermsFromProfile(v.sections, v.file);
+  for (const AuvCheckOptions::HeldTerm& h : o.held_terms)
+    if (const auto k = findTerm(h.id))
+      baseline_[*k] += (h.value - h.profile_value) / termLibrary()[*k].display_scale;
   if (!o.installed_kg.empty()) installed_ = sim::installedWeights(v, o.installed_kg);
   profile_bg_m_ = sim::flownMass(model_, installed_, std::nullopt, {}, 0.0).r_g_m.z();
   if (!(profile_bg_m_ > 1e-4))
@@ -272,6 +275,8 @@ bool AuvCheckModel::applicable(std::size_t term) const {
   if (t.id == "depth_sensor_offset") return has_depth_ref_;
   if (t.id == "quadratic_pitch_damping") return model_.hydro.Mqq_kgm2 != 0.0;
   if (t.id == "propeller_torque") return false;  // a calibration constant of the AUV, not missing physics
+  for (const AuvCheckOptions::HeldTerm& h : opt_.held_terms)
+    if (h.id == t.id) return false;  // calibrated by the analysis, held
   // A steady vertical current over a survey is not ocean physics; here it only stood in for the
   // calibrated groups (docs/decisions/model-check-selection.md).
   return t.id != "vertical_current";

@@ -78,6 +78,19 @@ struct AuvCheckOptions {
     double value = 0.0, sigma = 0.0;
   };
   std::vector<CalibrationPrior> calibration_priors;
+  // Library terms the analysis calibrated (its hull law and mass drift,
+  // fitted from steady legs at several depths, waters and times when they
+  // were significant): held at
+  // `value` (the vehicle's, display unit), not candidates, and reported
+  // among the calibration. The check's equation error cannot split the
+  // two buoyancy laws where temperature follows depth; the leg means can
+  // (hugin_concealed_bench: thermal expansion fitted -1e-4 by the check
+  // against a true +1e-4, +1e-4 +- 2e-5 by the analysis).
+  struct HeldTerm {
+    std::string id;
+    double value = 0.0, sigma = 0.0, profile_value = 0.0, prior_sigma = 0.0;
+  };
+  std::vector<HeldTerm> held_terms;
 };
 
 class AuvCheckModel final : public CheckModel {
@@ -97,6 +110,7 @@ class AuvCheckModel final : public CheckModel {
   Eigen::VectorXd nuisanceUpper() const override;
   std::vector<NuisancePrior> priors() const override;
   std::vector<CalibrationConstant> calibrationConstants() const override;
+  std::vector<HeldTermValue> heldTerms() const override;
   double profileTermValue(std::size_t term) const override;
   bool applicable(std::size_t term) const override;
   std::vector<Channel> equationChannels() const override { return eq_; }

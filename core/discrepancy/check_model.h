@@ -76,6 +76,13 @@ struct CalibrationConstant {
   bool from_analysis = false;  // held at the same log's analysis's value (and grouping)
 };
 
+// A library term held at a value calibrated elsewhere (the analysis's hull
+// law): in the model, not a candidate, reported with the calibration.
+struct HeldTermValue {
+  std::string id, unit, label;
+  double value = 0.0, sigma = 0.0, profile_value = 0.0, prior_sigma = 0.0;  // display unit
+};
+
 class CheckModel {
  public:
   virtual ~CheckModel() = default;
@@ -90,6 +97,7 @@ class CheckModel {
   virtual Eigen::VectorXd nuisanceUpper() const = 0;
   virtual std::vector<NuisancePrior> priors() const { return {}; }
   virtual std::vector<CalibrationConstant> calibrationConstants() const { return {}; }
+  virtual std::vector<HeldTermValue> heldTerms() const { return {}; }
   // The profile's value of a library term in its display unit (a found
   // term's reported value is this plus the fitted increment: what the
   // vehicle has, not a correction).

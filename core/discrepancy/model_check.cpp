@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "discrepancy/held_out_scoring.h"
+#include "discrepancy/held_term_findings.h"
 #include "discrepancy/joint_refit.h"
 #include "discrepancy/linearised_problem.h"
 #include "discrepancy/residual_statistics.h"
@@ -96,6 +97,7 @@ ModelCheckResult runModelCheck(const CheckModel& m, const ModelCheckOptions& o) 
   // --- 6, 7. RMS before/after, fitted and held-out; localisation -------------
   reportRmsAndLocalisation(s, scorer, acc.accepted, base.params, fin.params, lin.raw, all, R);
   locateAcceptedTerms(s, fin.params, all, acc.found);
+  reportHeldTermFindings(s, fitRows, acc.accepted, fin, all, acc.found, R);
   std::stable_sort(acc.found.begin(), acc.found.end(),
                    [](const MissingPhysics& a, const MissingPhysics& b) { return a.heldout_gain > b.heldout_gain; });
   R.missing_physics = acc.found;

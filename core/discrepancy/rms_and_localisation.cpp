@@ -45,30 +45,33 @@ void reportRmsAndLocalisation(const FitSetup& s, const HeldOutScorer& scorer, co
 
 void locateAcceptedTerms(const FitSetup& s, const Params& fin, const std::vector<std::uint32_t>& all,
                          std::vector<MissingPhysics>& found) {
-  const SampleTable& S = s.m.samples();
-  const std::size_t N = all.size();
   for (auto& mp : found) {
-    const std::size_t term = *findTerm(mp.id);
     Params without = fin;
-    without.terms[term] = 0.0;
-    const std::vector<double> rw = residualsAt(s, without, all), rf = residualsAt(s, fin, all);
-    std::size_t bestC = 0;
-    double best = -1.0;
-    for (std::size_t c = 0; c < s.C; ++c) {
-      double ss = 0.0;
-      for (std::size_t i = 0; i < N; ++i) {
-        const double d = rw[i * s.C + c] - rf[i * s.C + c];
-        if (std::isfinite(d)) ss += d * d * s.weight(c) * s.weight(c);
-      }
-      if (ss > best) {
-        best = ss;
-        bestC = c;
-      }
-    }
-    std::vector<double> contrib(N);
-    for (std::size_t i = 0; i < N; ++i) contrib[i] = rw[i * s.C + bestC] - rf[i * s.C + bestC];
-    mp.where = localise(S, contrib, s.eq[bestC], "term contribution").summary;
+    without.terms[*findTerm(mp.id)] = 0.0;
+    mp.where = locateContribution(s, without, fin, all);
   }
+}
+
+Message locateContribution(const FitSetup& s, const Params& without, const Params& with,
+                           const std::vector<std::uint32_t>& all) {
+  const std::size_t N = all.size();
+  const std::vector<double> rw = residualsAt(s, without, all), rf = residualsAt(s, with, all);
+  std::size_t bestC = 0;
+  double best = -1.0;
+  for (std::size_t c = 0; c < s.C; ++c) {
+    double ss = 0.0;
+    for (std::size_t i = 0; i < N; ++i) {
+      const double d = rw[i * s.C + c] - rf[i * s.C + c];
+      if (std::isfinite(d)) ss += d * d * s.weight(c) * s.weight(c);
+    }
+    if (ss > best) {
+      best = ss;
+      bestC = c;
+    }
+  }
+  std::vector<double> contrib(N);
+  for (std::size_t i = 0; i < N; ++i) contrib[i] = rw[i * s.C + bestC] - rf[i * s.C + bestC];
+  return localise(s.m.samples(), contrib, s.eq[bestC], "term contribution").summary;
 }
 
 }  // namespace auv::discrepancy::detail

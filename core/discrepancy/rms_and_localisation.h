@@ -23,4 +23,9 @@ void reportRmsAndLocalisation(const FitSetup& s, const HeldOutScorer& scorer, co
 void locateAcceptedTerms(const FitSetup& s, const Params& fin, const std::vector<std::uint32_t>& all,
                          std::vector<MissingPhysics>& found);
 
+// Where the model at `with` differs from it at `without`: the localisation of
+// the difference on the equation channel where it is largest (weighted).
+Message locateContribution(const FitSetup& s, const Params& without, const Params& with,
+                           const std::vector<std::uint32_t>& all);
+
 }  // namespace auv::discrepancy::detail

@@ -40,6 +40,16 @@ std::vector<AuvCheckOptions::CalibrationPrior> analysisCalibrationPriors(const a
   return out;
 }
 
+std::vector<AuvCheckOptions::HeldTerm> analysisHeldTerms(const analysis::AnalysisReport& r) {
+  std::vector<AuvCheckOptions::HeldTerm> out;
+  for (const analysis::CalibrationParameter& c : r.calibration)
+    if ((c.id == "hull_compressibility" || c.id == "thermal_expansion" || c.id == "mass_drift") && c.used &&
+        std::isfinite(c.value) &&
+        std::isfinite(c.sigma) && c.sigma > 0.0)
+      out.push_back({c.id, c.value, c.sigma, c.profile_value, c.prior_sigma});
+  return out;
+}
+
 std::unique_ptr<CheckModel> makeCheckModel(const MissionLog& log, const VehicleProfile& v, const std::string& resource_dir,
                                            const CheckSetup& s) {
   if (v.kind == "glider") return std::make_unique<GliderCheckModel>(log, v, s.glider);
@@ -49,6 +59,7 @@ std::unique_ptr<CheckModel> makeCheckModel(const MissionLog& log, const VehicleP
     if (!o.report_water) o.report_water = analysisWater(*s.analysis);
     if (o.calibration_priors.empty())
       o.calibration_priors = analysisCalibrationPriors(*s.analysis, sv.model.body.reference_length_m);
+    if (o.held_terms.empty()) o.held_terms = analysisHeldTerms(*s.analysis);
   }
   return std::make_unique<AuvCheckModel>(log, v, sv.model, sv.autopilot, o);
 }

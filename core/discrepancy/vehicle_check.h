@@ -28,6 +28,11 @@ struct CheckSetup {
 std::vector<AuvCheckOptions::CalibrationPrior> analysisCalibrationPriors(const analysis::AnalysisReport& r,
                                                                          double reference_length_m);
 
+// The analysis's buoyancy laws (hull law, mass drift), when they replaced
+// the profile's (significant change, CalibrationParameter::used), as terms
+// the check holds.
+std::vector<AuvCheckOptions::HeldTerm> analysisHeldTerms(const analysis::AnalysisReport& r);
+
 // The analysis's mean water, for AuvCheckOptions::report_water: the check's
 // net buoyancy then is the same quantity as the analysis's (empty when the
 // analysis has no mean density, temperature or pressure).

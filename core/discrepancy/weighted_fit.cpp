@@ -38,6 +38,8 @@ LmProblem makeProblem(const FitSetup& s, const std::vector<std::uint32_t>& rows,
     p.scale[j] = t.typical;
     p.lower[j] = t.lower;
     p.upper[j] = t.upper;
+    for (const auto& [term, value] : s.pinned_terms)
+      if (term == terms[k]) p.lower[j] = p.upper[j] = value;
   }
   p.residuals = [&s, &rows, terms](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     std::vector<double> out(rows.size() * s.C);

@@ -5,6 +5,7 @@
 // model check (model_check.cpp).
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,6 +25,9 @@ struct FitSetup {
   std::vector<double> sigma;  // per equation channel
   std::vector<NuisancePrior> priors;
   std::vector<double> eff;    // per channel: effective / actual sample size (AR(1) of the residuals)
+  // Fitted terms held at a value (library index -> value): the fit without a
+  // term the analysis calibrated (held_term_findings.h).
+  std::vector<std::pair<std::size_t, double>> pinned_terms;
   double weight(std::size_t c) const { return std::sqrt(eff[c]) / sigma[c]; }
 };
 

@@ -240,7 +240,11 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
   if (!(in.sigma_factor >= 0.0) || !std::isfinite(in.sigma_factor)) {
     throw InputError("sigma_factor", "must be a number >= 0", "use 1.645 for one-sided 95 %");
   }
-  const HullModel hull = in.hull.value_or(v.hull);
+  HullModel hull = in.hull.value_or(v.hull);
+  if (!in.hull) {  // the hull law the analysis fitted, when it replaced the profile's
+    hull.compressibility_per_dbar = in.estimate.hull_compressibility_per_dbar.value_or(hull.compressibility_per_dbar);
+    hull.thermal_expansion_per_degC = in.estimate.hull_thermal_expansion_per_degC.value_or(hull.thermal_expansion_per_degC);
+  }
   PreMissionPlan out;
   out.vehicle_id = v.id;
   out.policy = in.policy;

@@ -94,6 +94,13 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
       if (a.contains("cg_x_mm") && a["cg_x_mm"].is_number()) e.after_move_x_sigma_m = a["cg_x_mm"].get<double>() * 1e-3;
     }
   }
+  if (report.contains("calibration") && report["calibration"].is_array())
+    for (const nlohmann::json& c : report["calibration"]) {
+      if (!c.is_object() || !c.value("used", false) || !c.contains("value") || !c["value"].is_number()) continue;
+      const std::string id = c.value("id", std::string());
+      if (id == "hull_compressibility") e.hull_compressibility_per_dbar = c["value"].get<double>();
+      if (id == "thermal_expansion") e.hull_thermal_expansion_per_degC = c["value"].get<double>();
+    }
   if (report.contains("details") && report["details"].is_object() && report["details"].contains("flight_envelope")) {
     const nlohmann::json& f = report["details"]["flight_envelope"];
     if (f.is_object()) {

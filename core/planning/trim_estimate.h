@@ -46,6 +46,10 @@ struct TrimEstimate {
   // off the command at an elevator stop, shallower (too light or stern-heavy)
   // or deeper (too heavy or bow-heavy), or porpoising.
   bool log_too_light = false, log_too_heavy = false, log_porpoising = false;
+  // The hull law the analysis fitted and used (calibration entries
+  // hull_compressibility / thermal_expansion with "used": true): the plan's
+  // buoyancy at the next mission's depth and temperature follows it.
+  std::optional<double> hull_compressibility_per_dbar, hull_thermal_expansion_per_degC;
 };
 
 // Reads the analysis report JSON (issue #3 contract: net_buoyancy_kg,

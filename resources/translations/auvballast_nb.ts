@@ -1392,8 +1392,8 @@
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" line="81"/>
-        <source>The vehicle constants fitted together with the ballast state. &quot;This log&quot;: the log narrowed it; &quot;stayed at the prior&quot;: the log could not tell, the profile&apos;s value and its uncertainty stand; &quot;the analysis, held&quot;: the model check kept the same log&apos;s analysis&apos;s value and σ.</source>
-        <translation>Fartøykonstantene tilpasset sammen med ballasttilstanden. «Denne loggen»: loggen snevret den inn; «ble ved forhåndsverdien»: loggen kunne ikke avgjøre det, og profilens verdi og usikkerhet står; «analysens, holdt»: modellkontrollen beholdt verdien og σ fra analysen av den samme loggen.</translation>
+        <source>The vehicle constants fitted together with the ballast state. &quot;This log&quot;: the log narrowed it; &quot;stayed at the prior&quot;: the log could not tell, the profile&apos;s value and its uncertainty stand; &quot;the analysis, held&quot;: the model check kept the same log&apos;s analysis&apos;s value and σ; &quot;profile&apos;s kept&quot;: the log measured it and found no significant change, so the estimate kept the profile&apos;s value.</source>
+        <translation>Fartøykonstantene tilpasset sammen med ballasttilstanden. «Denne loggen»: loggen snevret den inn; «ble ved forhåndsverdien»: loggen kunne ikke avgjøre det, og profilens verdi og usikkerhet står; «analysens, holdt»: modellkontrollen beholdt verdien og σ fra analysen av den samme loggen; «profilens beholdt»: loggen målte den og fant ingen vesentlig endring, så estimatet beholdt profilens verdi.</translation>
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" line="90"/>
@@ -1462,9 +1462,34 @@
         <translation>Motstand i lengderetningen</translation>
     </message>
     <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="140"/>
+        <source>Hull compressibility</source>
+        <translation>Skrogets kompressibilitet</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="141"/>
+        <source>Hull thermal expansion</source>
+        <translation>Skrogets termiske utvidelse</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="142"/>
+        <source>Mass drift</source>
+        <translation>Masseendring over tid</translation>
+    </message>
+    <message>
         <location filename="../../ui/widgets/calibration_table.cpp" line="149"/>
         <source>this log</source>
         <translation>denne loggen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="170"/>
+        <source>At the profile&apos;s value (the log could not tell, or agreed with it): %1</source>
+        <translation>Ved profilens verdi (loggen kunne ikke avgjøre det, eller var enig med den): %1</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="155"/>
+        <source>profile&apos;s kept</source>
+        <translation>profilens beholdt</translation>
     </message>
     <message>
         <location filename="../../ui/widgets/calibration_table.cpp" line="152"/>

@@ -36,7 +36,7 @@ Shown shownUnit(const std::string& id, const std::string& unit) {
 }
 
 CalibrationRow makeRow(const std::string& id, const std::string& unit, double value, double sigma, double profile,
-                       bool identified, bool from_analysis) {
+                       bool identified, bool from_analysis, bool used = true) {
   Shown s = shownUnit(id, unit);
   // A unit that is a sentence ("N m at 100 rpm, bollard (J = 0)") would take
   // the table's width: it goes to the row's tooltip.
@@ -56,6 +56,7 @@ CalibrationRow makeRow(const std::string& id, const std::string& unit, double va
                                        : sig(profile * s.scale, 3);
   r.identified = identified;
   r.from_analysis = from_analysis;
+  r.used = used;
   r.unit_note = unit_note;
   return r;
 }
@@ -81,7 +82,9 @@ CalibrationTable::CalibrationTable(QWidget* parent) : QTableWidget(0, 4, parent)
   setFocusPolicy(Qt::NoFocus);  // read only: Tab goes on to the next field
   setToolTip(tr("The vehicle constants fitted together with the ballast state. \"This log\": the log narrowed "
                 "it; \"stayed at the prior\": the log could not tell, the profile's value and its uncertainty stand; "
-                "\"the analysis, held\": the model check kept the same log's analysis's value and σ."));
+                "\"the analysis, held\": the model check kept the same log's analysis's value and σ; \"profile's kept\": the log "
+                "measured it and found no significant change, so the estimate kept the "
+                "profile's value."));
 }
 
 void CalibrationTable::showRows(const std::vector<CalibrationRow>& rows) {
@@ -114,7 +117,7 @@ std::vector<CalibrationRow> CalibrationTable::rowsFromJson(const nlohmann::json&
     if (!c.is_object() || !c.contains("id") || !c["id"].is_string()) continue;
     out.push_back(makeRow(c["id"].get<std::string>(), c.value("unit", std::string()), num(c, "value"), num(c, "sigma"),
                       num(c, "profile_value"), c.value("identified", false),
-                          c.value("from_analysis", false)));
+                          c.value("from_analysis", false), c.value("used", true)));
   }
   return out;
 }
@@ -140,6 +143,9 @@ QString CalibrationTable::nameOf(const std::string& id) {
       {"pitch_damping", QT_TR_NOOP("Pitch damping")},
       {"roll_damping", QT_TR_NOOP("Roll damping")},
       {"surge_drag", QT_TR_NOOP("Surge drag")},
+      {"hull_compressibility", QT_TR_NOOP("Hull compressibility")},
+      {"thermal_expansion", QT_TR_NOOP("Hull thermal expansion")},
+      {"mass_drift", QT_TR_NOOP("Mass drift")},
   };
   if (const auto it = names.find(id); it != names.end()) return tr(it->second);
   // A constant this program has no name for yet: its id as words.
@@ -150,14 +156,25 @@ QString CalibrationTable::nameOf(const std::string& id) {
 
 QString CalibrationTable::source(const CalibrationRow& r) {
   if (r.from_analysis) return tr("the analysis, held");
+  if (r.identified && !r.used) return tr("profile's kept");
   return r.identified ? tr("this log") : tr("stayed at the prior");
 }
 
 QStringList CalibrationTable::lines(const std::vector<CalibrationRow>& rows) {
-  QStringList out;
-  for (const auto& r : rows)
+  // What the log set, one line each; the constants left at the profile's
+  // value in one line by name (a printed page has no room for ten lines
+  // that each say "the profile's"; the table and the JSON report have them).
+  QStringList out, kept;
+  for (const auto& r : rows) {
+    if (!r.from_analysis && (!r.identified || !r.used)) {
+      kept << r.name;
+      continue;
+    }
     out << tr("%1: %2 (profile %3); %4").arg(r.name, r.value, r.profile, source(r)) +
                (r.unit_note.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(r.unit_note));
+  }
+  if (!kept.isEmpty())
+    out << tr("At the profile's value (the log could not tell, or agreed with it): %1").arg(kept.join(QStringLiteral(", ")));
   return out;
 }
 

@@ -23,6 +23,7 @@ struct CalibrationRow {
   QString unit_note;  // a long unit, said in the tooltip (and the work order) instead of the cell
   bool identified = false;
   bool from_analysis = false;  // held by the model check at the same log's analysis's value
+  bool used = true;            // false: measured, but the estimate kept the profile's value (the hull law)
 };
 
 class CalibrationTable : public QTableWidget {

@@ -237,28 +237,30 @@ void drawWorkOrder(QPainter& painter, const QPaintDevice& device, const WorkOrde
     y += 2 * mm;
   };
   // Everything below the map: expected result, warnings, notes.
+  // The tail's fonts: smaller when it would not fit above the signature.
+  QFont t_body = body, t_section = section, t_small = small;
   auto tail = [&](bool draw) {
-    text(WorkOrder::tr("Expected result"), section, 1.0, draw);
-    for (const auto& e : w.expected) text(e, body, 0.5, draw);
+    text(WorkOrder::tr("Expected result"), t_section, 1.0, draw);
+    for (const auto& e : w.expected) text(e, t_body, 0.5, draw);
     if (!w.warnings.isEmpty()) {
       y += 2 * mm;
-      text(WorkOrder::tr("Warnings"), section, 1.0, draw);
-      for (const auto& x2 : w.warnings) text(WorkOrder::tr("⚠ %1").arg(x2), body, 0.5, draw);
+      text(WorkOrder::tr("Warnings"), t_section, 1.0, draw);
+      for (const auto& x2 : w.warnings) text(WorkOrder::tr("⚠ %1").arg(x2), t_body, 0.5, draw);
     }
     if (!w.calibration.isEmpty()) {
       y += 2 * mm;
-      text(WorkOrder::tr("What was calibrated"), section, 1.0, draw);
-      for (const auto& c : w.calibration) text(QStringLiteral("• %1").arg(c), small, 0.3, draw);
+      text(WorkOrder::tr("What was calibrated"), t_section, 1.0, draw);
+      for (const auto& c : w.calibration) text(QStringLiteral("• %1").arg(c), t_small, 0.3, draw);
     }
     if (!w.manoeuvre.isEmpty()) {
       y += 2 * mm;
-      text(WorkOrder::tr("Calibration manoeuvre for the next mission"), section, 1.0, draw);
-      for (const auto& m : w.manoeuvre) text(QStringLiteral("• %1").arg(m), small, 0.3, draw);
+      text(WorkOrder::tr("Calibration manoeuvre for the next mission"), t_section, 1.0, draw);
+      for (const auto& m : w.manoeuvre) text(QStringLiteral("• %1").arg(m), t_small, 0.3, draw);
     }
     if (!w.notes.isEmpty()) {
       y += 2 * mm;
-      text(WorkOrder::tr("Steps and notes"), section, 1.0, draw);
-      for (const auto& n : w.notes) text(QStringLiteral("• %1").arg(n), small, 0.3, draw);
+      text(WorkOrder::tr("Steps and notes"), t_section, 1.0, draw);
+      for (const auto& n : w.notes) text(QStringLiteral("• %1").arg(n), t_small, 0.3, draw);
     }
   };
 
@@ -310,8 +312,21 @@ void drawWorkOrder(QPainter& painter, const QPaintDevice& device, const WorkOrde
   if (w.map.length_m > 0) {
     // The map takes what the text below leaves of the page (30..65 mm).
     const double map_top = y;
-    tail(false);
-    const double tail_h = y - map_top;
+    // The signature line must stay on the page (a long tail pushed it off
+    // the demo's order): the tail's fonts shrink in steps, at most to 75 %.
+    double tail_h = 0.0;
+    for (double f = 1.0; f > 0.74; f -= 0.05) {
+      t_body.setPointSizeF(body.pointSizeF() * f);
+      t_section.setPointSizeF(section.pointSizeF() * f);
+      t_small.setPointSizeF(small.pointSizeF() * f);
+      y = map_top;
+      tail(false);
+      tail_h = y - map_top;
+      // The map's title, the smallest map, the tail, then the signature's
+      // gap, rule and line (drawn from y + 8 mm).
+      const double need = 8 * mm + 30 * mm + 3 * mm + tail_h + 16 * mm;
+      if (map_top + need <= page.bottom()) break;
+    }
     y = map_top;
     text(WorkOrder::tr("Where (top view, bow to the right)"), section);
     const double free_h = page.bottom() - 30 * mm - y - tail_h;

@@ -152,9 +152,14 @@ TEST(AveragedLegs, HistoryRowsKeepTheCycleMeans) {
   s.speed_mps.mean = 1.8;
   s.speed_mps.n = 1900;
   s.regressors = BalanceRegressors{0.99, -0.014, -0.05, -0.05, 0.031, 3.24, -9.7};
+  s.pressure_dbar = 61.5;  // the hull law's levers of a history segment
+  s.temperature_degC = 8.25;
   const nlohmann::json j = steadySegmentsJson({s, SteadySegmentMeans{}});
   const std::vector<SteadySegmentMeans> back = steadySegmentsFromJson(j, "history.segments");
   ASSERT_EQ(back.size(), 2u);
+  EXPECT_DOUBLE_EQ(back[0].pressure_dbar, 61.5);
+  EXPECT_DOUBLE_EQ(back[0].temperature_degC, 8.25);
+  EXPECT_TRUE(std::isnan(back[1].pressure_dbar));  // rows written without them: no lever
   ASSERT_TRUE(back[0].regressors.has_value());
   EXPECT_DOUBLE_EQ(back[0].regressors->aw_w, 0.031);
   EXPECT_DOUBLE_EQ(back[0].regressors->au_u_e, -9.7);

@@ -177,6 +177,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
       analysis::CalibrationParameter c;
       c.id = q["id"].get<std::string>();
       c.identified = q["identified"].get<bool>();
+      c.used = q.value("used", true);
       if (q["value"].is_number()) c.value = q["value"].get<double>();
       if (q["sigma"].is_number()) c.sigma = q["sigma"].get<double>();
       r.calibration.push_back(c);

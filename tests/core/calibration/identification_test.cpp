@@ -16,6 +16,7 @@
 #include "discrepancy/model_check.h"
 #include "discrepancy/plan_estimate.h"
 #include "discrepancy/vehicle_check.h"
+#include "first_log_check.h"
 #include "identification_harness.h"
 
 namespace auv::identification {
@@ -242,22 +243,6 @@ TEST(Identification, AModelCheckFitThePlanAdoptsCoversTheTruth) {
   EXPECT_EQ(called, 1);
 }
 
-// The model check as the CLI and the wizard run it (with the log's analysis)
-// on the first log of drawn truth `seed`; `expect` sees its result.
-void checkFirstLogWithItsAnalysis(
-    std::uint64_t seed,
-    const std::function<void(const discrepancy::ModelCheckResult&, const analysis::AnalysisReport&, double net_truth)>& expect) {
-  Harness h;
-  int called = 0;
-  h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double) {
-    ++called;
-    discrepancy::CheckSetup setup;
-    setup.analysis = &rep;
-    expect(discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, h.profile(), AUV_RESOURCE_DIR, setup)), rep, net_truth);
-  };
-  h.run(seed, false);
-  EXPECT_EQ(called, 1);
-}
 
 // Item 6: the same log checked the way the CLI and the wizard check it, with
 // its analysis (CheckSetup::analysis): the check holds the analysis's
@@ -266,7 +251,8 @@ void checkFirstLogWithItsAnalysis(
 // 0.15 kg of the truth (profile only: a false pitch-sensor bias and 1.2 kg;
 // held: 5.24 against 5.19).
 TEST(Identification, TheModelCheckHoldsTheAnalysisCalibration) {
-  checkFirstLogWithItsAnalysis(1101, [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double net_truth) {
+  checkFirstLogWithItsAnalysis(1101, [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double net_truth,
+                                        const Harness&) {
     EXPECT_TRUE(r.missing_physics.empty()) << r.missing_physics.front().id;
     EXPECT_NEAR(r.net_buoyancy_kg, net_truth, 0.15);
     // Its sigma holds the held groups' spread (joint_refit.cpp): the fit's
@@ -308,7 +294,8 @@ TEST(Identification, TheModelCheckHoldsTheAnalysisCalibration) {
 // calibration's error, and its spread over the held constants cannot even be
 // measured. The check now names nothing and says why.
 TEST(Identification, TheModelCheckRefusesATermPinnedAtItsRange) {
-  checkFirstLogWithItsAnalysis(5105, [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport&, double net_truth) {
+  checkFirstLogWithItsAnalysis(5105, [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport&, double net_truth,
+                                        const Harness&) {
     EXPECT_TRUE(r.missing_physics.empty()) << r.missing_physics.front().id;
     EXPECT_LE(std::abs(r.net_buoyancy_kg - net_truth), 2.0 * r.net_buoyancy_sigma_kg);
     bool refused = false;

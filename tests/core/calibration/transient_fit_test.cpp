@@ -101,7 +101,7 @@ TEST(TransientFit, ReplayAtTheTruthMatchesTheLogAndTheJointFitIsNoWorseThanStead
     tc.autopilot = ap;
     const TransientFit fit(c.log, nominal, tc);
     ASSERT_GT(fit.windowCount(), 3u);
-    Eigen::VectorXd p(kCalibrationCount);
+    Eigen::VectorXd p = Eigen::VectorXd::Zero(kCalibrationCount);
     const double L = nominal.body.reference_length_m;
     const sim::Hydrodynamics& hn = nominal.hydro;
     p(kNet) = units::g0 * net_truth;
