@@ -1,7 +1,6 @@
 #include "discrepancy/held_term_findings.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "discrepancy/rms_and_localisation.h"
 #include "discrepancy/residual_statistics.h"

@@ -78,7 +78,7 @@ void reportCalibration(const CheckModel& m, const Fit& fin, ModelCheckResult& R)
     if (d > 3.0 * c.sigma && d > 0.5 * c.prior_sigma) c.finding = calibrationWords(c);
     R.calibration.push_back(c);
   }
-  // Library terms the analysis calibrated (its hull law), as held; one 2 of
+  // Library terms the analysis calibrated (hull law, mass drift), as held; one 2 of
   // its sigmas from the profile's is reported as missing physics instead of
   // a finding here (held_term_findings.h).
   for (const HeldTermValue& h : m.heldTerms()) {
