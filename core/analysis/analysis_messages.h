@@ -111,6 +111,12 @@ inline constexpr MessageFormat kTransientsDropped{
     "analysis.transients_dropped",
     "the depth steps and speed changes disagreed among themselves more than they added (net buoyancy +- %1 kg with "
     "them, +- %2 kg from the steady segments alone): the estimate is the steady segments'"};
+inline constexpr MessageFormat kCalibrationPriorConflict{
+    "analysis.calibration_prior_conflict",
+    "the log put %1 more than three prior sigmas from the profile's value: no vehicle of this class has that, so "
+    "the steady balance did not describe this log (a pitch sensor bias, legs that were not steady, or a profile "
+    "of another vehicle); the net buoyancy and CG rest on that balance, so check the attitude sensor's alignment "
+    "and the profile before moving weights"};
 inline constexpr MessageFormat kTransientsNotFlownAsCommanded{
     "analysis.transients_not_flown_as_commanded",
     "the depth steps and speed changes were not flown again (--transients): the vehicle did not fly as commanded "
@@ -155,7 +161,7 @@ inline constexpr const MessageFormat* kAll[] = {
     &kNoDepthCommand, &kCtdOutOfRange, &kNoDensity, &kGliderCgX, &kGliderCgY, &kNoPumpVolume, &kNoPitch, &kNoSteadyDiveOrClimb, &kFewGlideSamples,
     &kLogMassDiffers, &kGliderFitNotConverged, &kGliderDefaultConstants, &kGliderDefaultCompressibility,
     &kNoRollSamples, &kNoPropRpm, &kOneCruiseRpm, &kCgYNeedsBg, &kNoSteadyLevelSegment, &kNoSpeed, &kNoSpeedAndPitch,
-    &kNoElevator, &kHistoryCalibration, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kTransientsNotFlownAsCommanded, &kTransientsWithHistory, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
+    &kNoElevator, &kHistoryCalibration, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kCalibrationPriorConflict, &kTransientsNotFlownAsCommanded, &kTransientsWithHistory, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
     &kPosteriorSigmas, &kPosteriorSigmasMunk, &kBgFromProfile, &kTrimmedCruise};
 
 }  // namespace auv::analysis::msg

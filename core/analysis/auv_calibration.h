@@ -52,6 +52,10 @@ struct CalibrationPriors {
   // The fitted buoyancy laws replace the profile's only at this chi2 of the
   // three (3 dof, 99 %); below it the profile's laws are held.
   double buoyancy_law_chi2 = 11.34;
+  // A pitch sensor bias the laws must stand beside (the nuisance of their
+  // significance test only): an AHRS's mounting is rarely known to better
+  // than a degree on a vehicle nobody has aligned.
+  double pitch_sensor_bias_sigma_deg = 1.0;
 };
 
 // One steady segment: speed, pitch rad, roll rad, elevator deg, depth rate
@@ -114,6 +118,7 @@ struct SteadyCalibration {
   // The buoyancy laws' change from the profile's, free: its chi2 from zero,
   // and whether it was significant and so used (else the profile's are held).
   double buoyancy_law_chi2 = 0.0;
+  double buoyancy_law_chi2_with_pitch_bias = 0.0;  // the same with a pitch sensor bias free beside them
   bool buoyancy_law_fitted = false;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // One calibrated vehicle constant as the analysis reports it (JSON
 // `calibration` list: id, value, unit, sigma, profile_value, identified).
+#include <cmath>
 #include <string>
 
 namespace auv::analysis {
@@ -15,5 +16,19 @@ struct CalibrationParameter {
   // profile's value (the hull law when its change was not significant).
   bool used = true;
 };
+
+// A hydrodynamic group of the steady balance that the log put more than
+// three prior sigmas from its prior. The profile's derivatives are known to
+// 30-50 %, so such a value (a cross-flow scale of -0.8, a heave lift of
+// 2.8 times the profile's) is not the vehicle's: the balance did not
+// describe the log, e.g. a pitch sensor bias the legs' means cannot tell
+// from the angle of attack (hugin_concealed_bench, pitch bias truths).
+inline bool conflictsWithPrior(const CalibrationParameter& q) {
+  static constexpr const char* kSteadyGroups[] = {"heave_lift_scale", "pitch_moment_uw", "crossflow_scale",
+                                                  "stern_plane_effectiveness", "elevator_zero_offset"};
+  bool group = false;
+  for (const char* id : kSteadyGroups) group = group || q.id == id;
+  return group && q.prior_sigma > 0.0 && std::abs(q.value - q.prior_value) > 3.0 * q.prior_sigma;
+}
 
 }  // namespace auv::analysis

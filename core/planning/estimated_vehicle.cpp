@@ -36,6 +36,16 @@ double displacedSigmaKg(const HullModel& hull, const PlannedWater& w, double t_s
   return std::hypot(dT, dS);
 }
 
+double hullLawSigmaKg(const HullModel& hull, const WaterState& log_water, const PlannedWater& w,
+                      double compressibility_sigma_per_dbar, double thermal_expansion_sigma_per_degC) {
+  const WaterState there = resolveWater(w);
+  auto change = [&](const HullModel& h) { return displacedMassKg(h, there) - displacedMassKg(h, log_water); };
+  HullModel k = hull, a = hull;
+  k.compressibility_per_dbar += compressibility_sigma_per_dbar;
+  a.thermal_expansion_per_degC += thermal_expansion_sigma_per_degC;
+  return std::hypot(change(k) - change(hull), change(a) - change(hull));
+}
+
 EstimatedVehicle estimatedVehicle(const VehicleProfile& v, const HullModel& hull, const TrimEstimate& e) {
   auto finite = [](double x) { return std::isfinite(x); };
   if (!finite(e.net_buoyancy_kg)) throw InputError("net_buoyancy_kg", "not a number", "give the analysis result");

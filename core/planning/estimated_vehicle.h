@@ -38,4 +38,12 @@ ResolvedPoint resolvePoint(const HullModel& hull, const PlannedWater& w);
 double displacedSigmaKg(const HullModel& hull, const PlannedWater& w, double temperature_sigma_degC,
                         double salinity_sigma_psu);
 
+// 1-sigma of the buoyancy change from the log's water to the planned point
+// that the uncertainty of a fitted hull law leaves (the analysis's sigmas of
+// the compressibility and the thermal expansion; 0 for a law not fitted).
+// The two are added in quadrature: the report carries their sigmas, not
+// their correlation.
+double hullLawSigmaKg(const HullModel& hull, const WaterState& log_water, const PlannedWater& w,
+                      double compressibility_sigma_per_dbar, double thermal_expansion_sigma_per_degC);
+
 }  // namespace auv

@@ -66,6 +66,7 @@ nlohmann::json toJson(const PreMissionPlan& p) {
   }
   j["safety"] = {{"margin_kg", r6(p.margin_kg)},
                  {"sigma_kg", r6(p.net_sigma_kg)},
+                 {"hull_law_sigma_kg", r6(p.hull_law_sigma_kg)},
                  {"rule", "net buoyancy after the move >= k * sigma at every planned point"},
                  {"band_kg", {r6(p.band_lo_kg), r6(p.band_hi_kg)}},
                  {"safe", p.safe},

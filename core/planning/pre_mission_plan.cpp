@@ -256,7 +256,7 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
   // Planned points: the band applies at the operating point, safety at all.
   std::vector<PlannedWater> waters{in.next.operating};
   waters.insert(waters.end(), in.next.transit.begin(), in.next.transit.end());
-  double sigma_water = 0.0, b_min = 0.0;
+  double sigma_water = 0.0, sigma_law = 0.0, b_min = 0.0;
   for (std::size_t i = 0; i < waters.size(); ++i) {
     const ResolvedPoint rp = resolvePoint(hull, waters[i]);
     PlannedPointResult r;
@@ -268,10 +268,15 @@ PreMissionPlan planPreMission(const VehicleProfile& v, const PreMissionInput& in
     out.at_points.push_back(r);
     sigma_water = std::max(sigma_water, displacedSigmaKg(hull, waters[i], in.next.temperature_sigma_degC,
                                                          in.next.salinity_sigma_psu));
+    if (!in.hull)  // a fitted hull law carries its own uncertainty to each depth and water
+      sigma_law = std::max(sigma_law, hullLawSigmaKg(hull, in.estimate.water, waters[i],
+                                                     in.estimate.hull_compressibility_sigma_per_dbar,
+                                                     in.estimate.hull_thermal_expansion_sigma_per_degC));
     b_min = i == 0 ? rp.displaced_kg : std::min(b_min, rp.displaced_kg);
   }
   const double b_op = out.at_points.front().displaced_kg;
-  out.net_sigma_kg = std::hypot(in.estimate.net_buoyancy_sigma_kg, sigma_water);
+  out.hull_law_sigma_kg = sigma_law;
+  out.net_sigma_kg = std::hypot(in.estimate.net_buoyancy_sigma_kg, sigma_water, sigma_law);
   out.margin_kg = in.sigma_factor * out.net_sigma_kg;
   // The same margin off the top keeps the true value inside the spec band
   // at both ends; where the two margins overlap, safety wins.

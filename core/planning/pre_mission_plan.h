@@ -68,6 +68,7 @@ struct PreMissionPlan {
   double net_before_kg = 0.0, pitch_before_deg = 0.0, roll_before_deg = 0.0;  // at the operating point
   PredictedTrim predicted;      // at the operating point
   double net_sigma_kg = 0.0, pitch_sigma_deg = 0.0, roll_sigma_deg = 0.0;
+  double hull_law_sigma_kg = 0.0;  // the fitted hull law's share of net_sigma_kg (0: the profile's law)
   // Pitch in level flight at the last mission's cruise speed (thesis §5.3.2
   // judges it there), before and after the move; unset without the
   // profile's hydrodynamics or a cruise speed (analysis/level_flight.h).

@@ -1,5 +1,6 @@
 #include "planning/trim_estimate.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/units.h"
@@ -98,8 +99,15 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
     for (const nlohmann::json& c : report["calibration"]) {
       if (!c.is_object() || !c.value("used", false) || !c.contains("value") || !c["value"].is_number()) continue;
       const std::string id = c.value("id", std::string());
-      if (id == "hull_compressibility") e.hull_compressibility_per_dbar = c["value"].get<double>();
-      if (id == "thermal_expansion") e.hull_thermal_expansion_per_degC = c["value"].get<double>();
+      const double sigma = c.contains("sigma") && c["sigma"].is_number() ? std::max(0.0, c["sigma"].get<double>()) : 0.0;
+      if (id == "hull_compressibility") {
+        e.hull_compressibility_per_dbar = c["value"].get<double>();
+        e.hull_compressibility_sigma_per_dbar = sigma;
+      }
+      if (id == "thermal_expansion") {
+        e.hull_thermal_expansion_per_degC = c["value"].get<double>();
+        e.hull_thermal_expansion_sigma_per_degC = sigma;
+      }
     }
   if (report.contains("details") && report["details"].is_object() && report["details"].contains("flight_envelope")) {
     const nlohmann::json& f = report["details"]["flight_envelope"];

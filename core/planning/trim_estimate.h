@@ -50,6 +50,7 @@ struct TrimEstimate {
   // hull_compressibility / thermal_expansion with "used": true): the plan's
   // buoyancy at the next mission's depth and temperature follows it.
   std::optional<double> hull_compressibility_per_dbar, hull_thermal_expansion_per_degC;
+  double hull_compressibility_sigma_per_dbar = 0.0, hull_thermal_expansion_sigma_per_degC = 0.0;  // their sigmas
 };
 
 // Reads the analysis report JSON (issue #3 contract: net_buoyancy_kg,

@@ -1,7 +1,8 @@
 // The hull law (issue 11): the analysis carries an extra compressibility and
 // an extra thermal expansion as two more groups, keeps them only when the
-// log shows a significant change, and the model check reports such a change
-// as missing physics from the leg means (held_term_findings.h). Truths: the
+// log shows a significant change (one that stands beside a pitch sensor
+// bias), and the model check reports such a change as missing physics from
+// the leg means (held_term_findings.h). Truths: the
 // identification harness's drawn HUGIN vehicles with a concealed hull law
 // (bench/hugin_concealed_bench's cases), and without one.
 #include <gtest/gtest.h>
@@ -119,6 +120,34 @@ TEST(HullLaw, AThermalExpansionTheProfileLacksIsNamedFromTheLegMeans) {
                           rho * (h.profile().hull.volumeAt(w.temperature_degC - 4.0, p) - h.profile().hull.volumeAt(w.temperature_degC, p));
     EXPECT_LT(with_law - without, -0.4);  // about 0.66 kg less buoyant than the profile's law says
     EXPECT_NEAR(with_law - without, oracle, 0.01);
+
+    // The law's own sigma widens the plan's: at each planned point the
+    // change of rho V from the log's water when a constant moves by its
+    // sigma (oracle: volumeAt at the points' resolved waters), the largest
+    // point's, in quadrature with the estimate's and the water's.
+    in.estimate = trimEstimateFromReport(analysis::toJson(rep), "5305");
+    const PreMissionPlan plan = planPreMission(h.profile(), in);
+    const double s_alpha = in.estimate.hull_thermal_expansion_sigma_per_degC;
+    const double s_kappa = in.estimate.hull_compressibility_sigma_per_dbar;
+    EXPECT_NEAR(s_alpha, a->sigma, 1e-5 * a->sigma);
+    const WaterState& lw = in.estimate.water;
+    double law_oracle = 0.0;
+    for (const auto& pt : plan.at_points) {
+      HullModel f = h.profile().hull, fa, fk;
+      f.thermal_expansion_per_degC = a->value;
+      f.compressibility_per_dbar = *in.estimate.hull_compressibility_per_dbar;
+      fa = fk = f;
+      fa.thermal_expansion_per_degC += s_alpha;
+      fk.compressibility_per_dbar += s_kappa;
+      auto change = [&](const HullModel& m) {
+        return pt.state.density_kgm3 * m.volumeAt(pt.state.temperature_degC, pt.state.pressure_dbar) -
+               lw.density_kgm3 * m.volumeAt(lw.temperature_degC, lw.pressure_dbar);
+      };
+      law_oracle = std::max(law_oracle, std::hypot(change(fa) - change(f), change(fk) - change(f)));
+    }
+    EXPECT_GT(plan.hull_law_sigma_kg, 0.05);  // 4 degC colder with alpha +- 1.3e-5: about 0.09 kg
+    EXPECT_NEAR(plan.hull_law_sigma_kg, law_oracle, 1e-3);
+    EXPECT_GT(plan.net_sigma_kg, std::hypot(in.estimate.net_buoyancy_sigma_kg, plan.hull_law_sigma_kg) - 1e-9);
   }, thermal);
 }
 
@@ -163,6 +192,50 @@ TEST(HullLaw, TheProfilesLawIsKeptWhereTheLogAgrees) {
       for (const auto& c : r.calibration) EXPECT_NE(c.id, id);
     }
   });
+}
+
+// A pitch sensor 1 degree off (truth 5500 of hugin_concealed_bench's
+// pitch-bias case): every leg's angle of attack is off by the same angle,
+// which the legs' means showed as a hull compressibility of 4e-6 at 5 sigma
+// and as a cross-flow scale of -0.8. With a pitch sensor bias free beside
+// them (prior 1 degree) the laws are not significant and stay the
+// profile's; the analysis warns that its cross-flow conflicts with every
+// vehicle of the class; the check does not hold that group, and names the
+// bias, with a sigma that covers the truth.
+TEST(HullLaw, APitchSensorBiasIsNotTakenForAHullLaw) {
+  discrepancy::SyntheticAuvTruth bias;
+  bias.pitch_bias_deg = 1.0;
+  checkFirstLogWithItsAnalysis(
+      5500,
+      [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double, const Harness&) {
+    for (const char* id : {"hull_compressibility", "thermal_expansion", "mass_drift"}) {
+      const analysis::CalibrationParameter* a = parameter(rep, id);
+      ASSERT_NE(a, nullptr) << id;
+      EXPECT_FALSE(a->used) << id;
+    }
+    const analysis::CalibrationParameter* cf = parameter(rep, "crossflow_scale");
+    ASSERT_NE(cf, nullptr);
+    EXPECT_GT(std::abs(cf->value - cf->prior_value), 3.0 * cf->prior_sigma);  // what the bias did to it
+    bool warned = false;
+    for (const Message& w : rep.warnings)
+      if (w.id() == "analysis.calibration_prior_conflict") {
+        warned = true;
+        ASSERT_EQ(w.args().size(), 1u);
+        EXPECT_NE(w.args()[0].find("crossflow_scale"), std::string::npos) << w.args()[0];
+      }
+    EXPECT_TRUE(warned);
+    for (const auto& c : r.calibration)
+      if (c.id == "crossflow_pitch_moment") EXPECT_FALSE(c.from_analysis);
+    ASSERT_FALSE(r.missing_physics.empty());
+    const discrepancy::MissingPhysics& m = r.missing_physics.front();
+    EXPECT_EQ(m.id, "pitch_sensor_bias");
+    EXPECT_LE(std::abs(m.value - 1.0), 2.0 * m.sigma) << m.value << " +- " << m.sigma;
+    EXPECT_NEAR(m.value, 1.0, 0.3);
+    for (const auto& k : r.missing_physics) {
+      EXPECT_NE(k.id, "thermal_expansion");
+      EXPECT_NE(k.id, "hull_compressibility");
+    }
+  }, bias);
 }
 
 }  // namespace
