@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/calibration_parameter.h"
 #include "analysis/mission_analysis.h"
 #include "discrepancy/model_check.h"
 #include "discrepancy/plan_estimate.h"
@@ -184,7 +185,7 @@ int main(int argc, char** argv) {
   int looped = 0, spec = 0, net_ok = 0, pitch_ok = 0, roll_ok = 0, safe = 0, n3 = 0, spec3 = 0;
   int spec2 = 0, net2 = 0, pitch2 = 0, roll2 = 0, safe2 = 0, spec23 = 0, twice = 0, asked = 0, flown = 0;
   std::map<std::string, int> identified;
-  int laws_used = 0;
+  int laws_used = 0, conflicted = 0;
   ModelCheckTally mc;
   if (model_checks > 0)
     h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double x_truth) {
@@ -220,6 +221,9 @@ int main(int argc, char** argv) {
     bool lawsUsed = false;  // the truths fly the profile's hull law and mass: each kept is a false one
     for (const auto& q : r.calibration) lawsUsed = lawsUsed || (q.id == "mass_drift" && q.used);
     laws_used += lawsUsed ? 1 : 0;
+    bool conflict = false;
+    for (const auto& q : r.calibration) conflict = conflict || analysis::conflictsWithPrior(q);
+    conflicted += conflict ? 1 : 0;
     if (r.known) {
       ++known;
       en.push_back(std::abs(r.net_err_kg));
@@ -270,6 +274,8 @@ int main(int argc, char** argv) {
   for (const auto& [id, n] : identified) std::printf(" %s %d,", id.c_str(), n);
   std::printf("\n  buoyancy laws (hull law, mass drift) kept as significant: %d of %d (the truths have the profile's)\n",
               laws_used, truths);
+  std::printf("  a group more than 3 prior sigmas from its prior (analysis.calibration_prior_conflict): %d of %d\n",
+              conflicted, truths);
   if (loop)
     std::printf("  second mission, joint with the first (history): net %.3f / %.3f kg (coverage %d of %zu), "
                 "CG x %.2f / %.2f mm (coverage %d of %zu), median / p90\n",
