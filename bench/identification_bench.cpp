@@ -14,7 +14,10 @@
 // model check of the first N logs, which conceal no effect, run with each
 // log's analysis as the CLI and the wizard run it: the terms it names there
 // are false, and how often its own ballast fit and the one the
-// plan adopts with all its terms accepted (planEstimate) cover the truth)
+// plan adopts with all its terms accepted (planEstimate) cover the truth;
+// --pitch-bias DEG: every mission's pitch sensor reads DEG too high, as in
+// hugin_concealed_bench's pitch-bias case; --dump SEED PREFIX writes one
+// truth's logs and first report for the CLI and the wizard)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -140,7 +143,7 @@ int main(int argc, char** argv) {
   int truths = 50;
   std::uint64_t seed = 1100;
   bool loop = true, timing = true, verbose = false, fly_manoeuvre = false;
-  double log_interval_s = 1.0;
+  double log_interval_s = 1.0, pitch_bias_deg = 0.0;
   bool transients = false;
   int model_checks = 0;
   for (int i = 1; i < argc; ++i) {
@@ -153,6 +156,7 @@ int main(int argc, char** argv) {
     else if (a == "--fly-manoeuvre") fly_manoeuvre = true;
     else if (a == "--log-interval" && i + 1 < argc) log_interval_s = std::atof(argv[++i]);
     else if (a == "--transients") transients = true;
+    else if (a == "--pitch-bias" && i + 1 < argc) pitch_bias_deg = std::atof(argv[++i]);  // a concealed sensor bias
     else if (a == "--model-check" && i + 1 < argc) model_checks = std::atoi(argv[++i]);
     else if (a == "--truth-doc" && i + 2 < argc) {  // --truth-doc SEED FILE: the truth's hydrodynamics companion
       const nlohmann::json nominal = JsonReader::parseFile(std::string(AUV_RESOURCE_DIR) + "/sim/hugin1000_hydrodynamics.json");
@@ -160,8 +164,9 @@ int main(int argc, char** argv) {
       return 0;
     }
     else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: logs (first, -2 second) and report of one truth
-      // The flags given before it apply (--fly-manoeuvre, --log-interval, --transients).
+      // The flags given before it apply (--fly-manoeuvre, --log-interval, --transients, --pitch-bias).
       identification::Harness h;
+      h.concealed.pitch_bias_deg = pitch_bias_deg;
       h.log_interval_s = log_interval_s;
       h.use_transients = transients;
       h.fly_manoeuvre = fly_manoeuvre;
@@ -170,7 +175,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     else {
-      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre] [--model-check N]\n");
+      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre] [--pitch-bias DEG] [--model-check N] [--dump SEED PREFIX]\n");
       return 2;
     }
   }
@@ -178,6 +183,7 @@ int main(int argc, char** argv) {
   h.log_interval_s = log_interval_s;
   h.use_transients = transients;
   h.fly_manoeuvre = fly_manoeuvre;
+  h.concealed.pitch_bias_deg = pitch_bias_deg;
   std::vector<double> en, ex, ey, en2, ex2, zn, zx;  // zn, zx: |error| / sigma
   int flagged = 0, light = 0, heavy = 0, porpoise = 0, flagged_miss2 = 0, clean = 0, clean_spec2 = 0;
   std::vector<double> droll1, dpitch1;  // |flown after one move - the plan's prediction|
