@@ -113,7 +113,8 @@ inline constexpr MessageFormat kTransientsDropped{
     "them, +- %2 kg from the steady segments alone): the estimate is the steady segments'"};
 inline constexpr MessageFormat kCalibrationPriorConflict{
     "analysis.calibration_prior_conflict",
-    "the log put %1 more than three prior sigmas from the profile's value: no vehicle of this class has that, so "
+    "the log put %1 at %2 where the profile has %3 +- %4: more than three prior sigmas away, which no vehicle of "
+    "this class has, so "
     "the steady balance did not describe this log (a pitch sensor bias, legs that were not steady, or a profile "
     "of another vehicle); the net buoyancy and CG rest on that balance, so check the attitude sensor's alignment "
     "and the profile before moving weights"};

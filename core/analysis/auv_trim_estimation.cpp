@@ -413,15 +413,10 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
       out.notes.push_back(Message(msg::kElevatorOffsetPrior, {fmt("%.0f", pri.elevator_offset_sigma_deg)}));
   }
   for (const auto& q : cal.parameters) out.calibration.push_back(q);
-  std::string conflicts;
   for (const auto& q : cal.parameters)
-    if (conflictsWithPrior(q)) {
-      if (!conflicts.empty()) conflicts += ", ";
-      conflicts += q.id;
-      conflicts += " " + fmt("%.3g", q.value) + " (profile " + fmt("%.3g", q.prior_value) + " +- " +
-                   fmt("%.2g", q.prior_sigma) + ")";
-    }
-  if (!conflicts.empty()) out.warnings.push_back(Message(msg::kCalibrationPriorConflict, {conflicts}));
+    if (conflictsWithPrior(q))
+      out.warnings.push_back(Message(msg::kCalibrationPriorConflict, {q.id, fmt("%.3g", q.value), fmt("%.3g", q.prior_value),
+                                                                      fmt("%.2g", q.prior_sigma)}));
   out.calibrated = calibratedCoefficients(*coeffs, m.rho, cal.p);
   // Per-segment values at each segment's own water, calibrated model.
   Model one = m;

@@ -225,9 +225,9 @@ void Parser::checkAttitudeUnits(std::vector<detail::InterchangeColumn>& cols, st
                             what + "; treated as not sampled", fix);
     } else if (!declaredRad && detail::looksLikeRadians(base, a, zmax - zmin)) {
       detail::reportProblem(rep_, opt_, ReadProblemKind::kUnitAssumed, {file_, header_line_, 0}, cols[c].name,
-                            "all " + std::to_string(a.valid) + " values are within +-" + numberText(a.max_abs_deg) +
+                            "all " + std::to_string(a.valid) + " values are within +-" + roundedText(a.max_abs_deg) +
                                 " " + declared + " while the vehicle changed depth by " +
-                                numberText(zmax - zmin) + " m, which looks like radians",
+                                roundedText(zmax - zmin) + " m, which looks like radians",
                             "if the column holds radians, write `" + cols[c].name +
                                 " [rad]` in the header (docs/formats/mission-log-csv.md)");
     }

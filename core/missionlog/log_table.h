@@ -83,5 +83,8 @@ std::string toValidUtf8(std::string_view s);
 
 // Shortest round-trip text of a number, for messages.
 std::string numberText(double v);
+// Three significant digits, for a figure the reader computed (a span, an
+// extreme) rather than a value as the file wrote it.
+std::string roundedText(double v);
 
 }  // namespace auv

@@ -185,8 +185,8 @@
     </message>
     <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
-        <source>The log put %1 more than three prior sigmas from the profile&apos;s value. No vehicle of this class has that, so the steady balance did not describe this log (a pitch sensor bias, legs that were not steady, or a profile of another vehicle). The net buoyancy and CG rest on that balance: check the attitude sensor&apos;s alignment and the profile before moving weights.</source>
-        <translation>Loggen la %1 mer enn tre a priori-sigma fra profilens verdi. Ingen fartøy i denne klassen har det, så den stødige balansen beskrev ikke denne loggen (en skjevhet i stampesensoren, etapper som ikke var stødige, eller en profil for et annet fartøy). Netto oppdrift og tyngdepunkt hviler på den balansen: kontroller innrettingen av attitydesensoren og profilen før du flytter lodd.</translation>
+        <source>The log put %1 at %2 where the profile has %3 ± %4: more than three prior sigmas away, which no vehicle of this class has, so the steady balance did not describe this log (a pitch sensor bias, legs that were not steady, or a profile of another vehicle). The net buoyancy and CG rest on that balance: check the attitude sensor&apos;s alignment and the profile before moving weights.</source>
+        <translation>Loggen la %1 på %2 der profilen har %3 ± %4: mer enn tre a priori-sigma unna, noe ingen fartøy i denne klassen har, så den stødige balansen beskrev ikke denne loggen (en skjevhet i stampesensoren, etapper som ikke var stødige, eller en profil for et annet fartøy). Netto oppdrift og tyngdepunkt hviler på den balansen: kontroller innrettingen av attitydesensoren og profilen før du flytter lodd.</translation>
     </message>
     <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
