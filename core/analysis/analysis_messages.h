@@ -107,6 +107,10 @@ inline constexpr MessageFormat kThrustersInEverySegment{
     AUV_NOT_ID "the tunnel thrusters ran in all %1 steady segment(s) (up to %2 rpm) and carry an unknown part of the "
     "net buoyancy, which the steady balance has no term for; fly steady legs above the thrusters' hand-over speed, "
     "or use the model check, which replays them"};
+inline constexpr MessageFormat kGlidesDropped{
+    "analysis.glides_dropped",
+    "%1 dive(s) or climb(s) held a steady pitch but did not fit the balance the level legs calibrated (the depth "
+    "changed at a pitch and elevator no steady flight has): left out of the estimate"};
 inline constexpr MessageFormat kTransientsDropped{
     "analysis.transients_dropped",
     "the depth steps and speed changes disagreed among themselves more than they added (net buoyancy +- %1 kg with "
@@ -162,7 +166,7 @@ inline constexpr const MessageFormat* kAll[] = {
     &kNoDepthCommand, &kCtdOutOfRange, &kNoDensity, &kGliderCgX, &kGliderCgY, &kNoPumpVolume, &kNoPitch, &kNoSteadyDiveOrClimb, &kFewGlideSamples,
     &kLogMassDiffers, &kGliderFitNotConverged, &kGliderDefaultConstants, &kGliderDefaultCompressibility,
     &kNoRollSamples, &kNoPropRpm, &kOneCruiseRpm, &kCgYNeedsBg, &kNoSteadyLevelSegment, &kNoSpeed, &kNoSpeedAndPitch,
-    &kNoElevator, &kHistoryCalibration, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kCalibrationPriorConflict, &kTransientsNotFlownAsCommanded, &kTransientsWithHistory, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
+    &kNoElevator, &kHistoryCalibration, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kGlidesDropped, &kCalibrationPriorConflict, &kTransientsNotFlownAsCommanded, &kTransientsWithHistory, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
     &kPosteriorSigmas, &kPosteriorSigmasMunk, &kBgFromProfile, &kTrimmedCruise};
 
 }  // namespace auv::analysis::msg

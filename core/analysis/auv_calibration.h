@@ -52,6 +52,11 @@ struct CalibrationPriors {
   // The fitted buoyancy laws replace the profile's only at this chi2 of the
   // three (3 dof, 99 %); below it the profile's laws are held.
   double buoyancy_law_chi2 = 11.34;
+  // Where the legs scatter less than their propagated standard errors say
+  // (chi2/dof < 1, at least 3 degrees of freedom, no history segment), the
+  // data information is scaled by the one-sided 95 % upper bound of that
+  // variance, never by more than 1 / kMinDataVarianceScale.
+  bool narrow_to_scatter = true;
   // A pitch sensor bias the laws must stand beside (the nuisance of their
   // significance test only): an AHRS's mounting is rarely known to better
   // than a degree on a vehicle nobody has aligned.
@@ -65,6 +70,9 @@ struct CalibrationSegment {
   double density_kgm3 = 1025.0;
   double buoyancy_change_n = 0.0;  // B_i - B_reference from density and hull law (known)
   std::optional<BalanceRegressors> regressors;  // an averaged leg's cycle means; unset = from the means v
+  // A steady dive or climb (kGlide): kept only where the level legs'
+  // calibration explains it (calibrateSteady, glides_dropped).
+  bool glide = false;
   // A segment of an earlier mission of the same configuration (history,
   // issue 11 item 3): its weight, and the known moment of the pieces moved
   // since, W_now x_now = W_then x_then + moment, so moment_offset_nm = -moment.
@@ -103,6 +111,11 @@ struct SteadyCalibration {
   // (mean weights_at, sigmas weights_sigma) of the parameter-dependent one.
   Eigen::VectorXd weights_at, weights_sigma;
   double chi2_per_dof = 0.0;
+  // The scale the steady rows' variance was given: chi2/dof above 1, the
+  // one-sided 95 % upper bound of it below 1 (CalibrationPriors::
+  // narrow_to_scatter), 1 = as propagated. Planned legs (covarianceAfter)
+  // are weighed with it too.
+  double data_variance_scale = 1.0;
   double data_parameters = 0.0;  // effective number of parameters the data determined
   std::vector<CalibrationParameter> parameters;  // hydrodynamic groups only
   double elevator_offset_deg = 0.0, elevator_offset_sigma_deg = 0.0;
@@ -115,6 +128,10 @@ struct SteadyCalibration {
   // false: with their scatter the transients knew less than the steady
   // segments (a wider net buoyancy or CG x sigma), and p, cov are the steady ones.
   bool transients_kept = false;
+  // Glides the level legs' calibration could not explain (chi2 of the
+  // prediction above 13.8, 2 dof, 99.9 %): pitch held flat while the depth
+  // changes is not always a steady balance. Left out of the fit.
+  std::size_t glides_dropped = 0;
   // The buoyancy laws' change from the profile's, free: its chi2 from zero,
   // and whether it was significant and so used (else the profile's are held).
   double buoyancy_law_chi2 = 0.0;

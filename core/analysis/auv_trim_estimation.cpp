@@ -360,6 +360,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     c.density_kgm3 = std::isfinite(g.density_kgm3) ? g.density_kgm3 : ctx.density_kgm3;
     c.buoyancy_change_n = std::isfinite(g.buoyancy_change_n) ? g.buoyancy_change_n : 0.0;
     c.regressors = g.regressors;
+    c.glide = g.glide;
     c.weight_n = g.weight_n;
     c.moment_offset_nm = g.moment_offset_nm;
     c.compressibility_lever_n = g.compressibility_lever_n;
@@ -393,6 +394,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     notIdentifiable(Message(msg::kDegenerate));
     return out;
   }
+  if (cal.glides_dropped > 0) out.notes.push_back(Message(msg::kGlidesDropped, {std::to_string(cal.glides_dropped)}));
   if (cal.transient_residuals > 0 && !cal.transients_kept)
     out.notes.push_back(Message(msg::kTransientsDropped, {fmt("%.2f", cal.transient_net_sigma_n / units::g0),
                                                           fmt("%.2f", std::sqrt(cal.cov(kNet, kNet)) / units::g0)}));

@@ -46,6 +46,7 @@ struct SteadySegmentMeans {
   // History segments only (see CalibrationSegment): set by the caller.
   double weight_n = 0.0, moment_offset_nm = 0.0;
   bool from_history = false;
+  bool glide = false;  // a steady dive or climb (kGlide), not a level leg
   // The largest mean |rpm| of the vehicle's tunnel thrusters over the
   // segment, when they ran above their deadband: the steady balance has no
   // thruster term, so such a segment is left out (0 = they did not run).

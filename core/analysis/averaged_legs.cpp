@@ -97,6 +97,45 @@ std::optional<double> arrivedAndHeld(const TimeSeries& depth, const TimeSeries& 
   return arrived;
 }
 
+// The longest run in [a, b] where the pitch, smoothed over kPlateauSmooth_s,
+// stays within tol_deg of its median there: the pitch-limited middle of a
+// depth change (the autopilot's pitch limit), or a steady sink.
+std::optional<TimeWindow> pitchPlateau(const TimeSeries& pitch, double a, double b, double tol_deg) {
+  constexpr double kPlateauSmooth_s = 6.0;
+  const auto lo = std::lower_bound(pitch.t.begin(), pitch.t.end(), a) - pitch.t.begin();
+  const auto hi = std::upper_bound(pitch.t.begin(), pitch.t.end(), b) - pitch.t.begin();
+  TimeSeries sm;
+  for (std::ptrdiff_t i = lo; i < hi; ++i) {
+    double sum = 0.0;
+    int n = 0;
+    for (std::ptrdiff_t j = i; j >= lo && pitch.t[j] >= pitch.t[i] - 0.5 * kPlateauSmooth_s; --j)
+      if (std::isfinite(pitch.v[j])) sum += pitch.v[j], ++n;
+    for (std::ptrdiff_t j = i + 1; j < hi && pitch.t[j] <= pitch.t[i] + 0.5 * kPlateauSmooth_s; ++j)
+      if (std::isfinite(pitch.v[j])) sum += pitch.v[j], ++n;
+    if (n > 0) {
+      sm.t.push_back(pitch.t[i]);
+      sm.v.push_back(sum / n);
+    }
+  }
+  if (sm.size() < 3) return std::nullopt;
+  std::vector<double> sorted = sm.v;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double med = sorted[sorted.size() / 2];
+  std::optional<TimeWindow> best;
+  std::size_t i = 0;
+  while (i < sm.size()) {
+    if (!(std::abs(sm.v[i] - med) <= tol_deg)) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j + 1 < sm.size() && std::abs(sm.v[j + 1] - med) <= tol_deg) ++j;
+    if (!best || sm.t[j] - sm.t[i] > best->duration()) best = TimeWindow{sm.t[i], sm.t[j]};
+    i = j + 1;
+  }
+  return best;
+}
+
 }  // namespace
 
 std::vector<Segment> averagedLegs(const MissionLog& log, const TimeSeries& depth,
@@ -133,16 +172,18 @@ std::vector<Segment> averagedLegs(const MissionLog& log, const TimeSeries& depth
   return out;
 }
 
-std::vector<Segment> auvSteadyGlides(const MissionLog& log, const std::vector<Segment>& phases,
-                                     const std::vector<TimeWindow>& command_cuts, const SegmentOptions& o) {
+std::vector<Segment> auvSteadyGlides(const MissionLog& log, const std::vector<Segment>& phases, const SegmentOptions& o) {
   std::vector<Segment> out;
   if (!log.has("pitch")) return out;
   const TimeSeries pitch = log.series("pitch");
   std::vector<TimeWindow> vertical;
-  for (const Segment& p : phases)
-    if ((p.kind == SegmentKind::kDive || p.kind == SegmentKind::kClimb) && p.start_s + 2 * o.settle_s < p.end_s)
-      vertical.push_back({p.start_s + o.settle_s, p.end_s - o.settle_s});
-  for (const TimeWindow& w : subtractWindows(vertical, command_cuts)) {
+  for (const Segment& p : phases) {
+    if (p.kind != SegmentKind::kDive && p.kind != SegmentKind::kClimb) continue;
+    const std::optional<TimeWindow> plateau = pitchPlateau(pitch, p.start_s, p.end_s, o.auv_glide_plateau_deg);
+    if (plateau && plateau->start_s + 2 * o.auv_glide_settle_s < plateau->end_s)
+      vertical.push_back({plateau->start_s + o.auv_glide_settle_s, plateau->end_s - o.auv_glide_settle_s});
+  }
+  for (const TimeWindow& w : vertical) {
     if (w.duration() < o.auv_glide_min_s) continue;
     if (!(sdOf(smoothedIn(pitch, w.start_s, w.end_s).v) <= o.auv_glide_max_pitch_sd_deg)) continue;
     SegmentKind phase = SegmentKind::kDive;

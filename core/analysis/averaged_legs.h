@@ -28,12 +28,15 @@ std::vector<Segment> averagedLegs(const MissionLog& log, const TimeSeries& depth
 
 // Steady dives and climbs of an AUV: the pitch-limited middle of a depth
 // change, or a vehicle that cannot hold its depth (the elevator at its
-// stop, sinking or rising at a constant pitch): constant commands, a
-// steady pitch, at least `o.auv_glide_min_s`. The
-// steady balance holds there with w from the depth rate (auv_steady_model.h).
-// kGlide segments with `phase` kDive or kClimb.
-std::vector<Segment> auvSteadyGlides(const MissionLog& log, const std::vector<Segment>& phases,
-                                     const std::vector<TimeWindow>& command_cuts, const SegmentOptions& o);
+// stop, sinking or rising at a constant pitch). In each dive or climb
+// phase, the longest run where the pitch stays within
+// `o.auv_glide_plateau_deg` of its median, less `o.auv_glide_settle_s` at
+// each end, at least `o.auv_glide_min_s`. No command cut is subtracted: the
+// rpm step that often comes with a depth change settles inside the
+// plateau's margins, and whether the balance holds there is checked by the
+// calibration (glides_dropped). The steady balance holds with w from the
+// depth rate (auv_steady_model.h). kGlide segments with `phase` kDive or kClimb.
+std::vector<Segment> auvSteadyGlides(const MissionLog& log, const std::vector<Segment>& phases, const SegmentOptions& o);
 
 // Mean of `s` over whole cycles: the sample mean over [bounds.front(),
 // bounds.back()], its standard error from the spread of the per-cycle means

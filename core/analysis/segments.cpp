@@ -242,7 +242,7 @@ Segmentation detectSegments(const MissionLog& log, const SegmentOptions& o) {
     if (w.duration() >= o.min_steady_s) seg.operating.push_back({SegmentKind::kSteady, w.start_s, w.end_s, SegmentKind::kLevel, {}});
   command_cut = mergeWindows(std::move(command_cut));
   if (o.auv_steady_glides)
-    for (Segment& g : auvSteadyGlides(log, seg.phases, command_cut, o)) seg.operating.push_back(std::move(g));
+    for (Segment& g : auvSteadyGlides(log, seg.phases, o)) seg.operating.push_back(std::move(g));
   std::sort(seg.operating.begin(), seg.operating.end(),
             [](const Segment& a, const Segment& b) { return a.start_s < b.start_s; });
   seg.command_cuts = command_cut;

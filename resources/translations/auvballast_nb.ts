@@ -180,6 +180,11 @@
     </message>
     <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="54"/>
+        <source>%1 dive(s) or climb(s) held a steady pitch but did not fit the balance the level legs calibrated (the depth changed at a pitch and elevator no steady flight has): left out of the estimate.</source>
+        <translation>%1 dykk eller stigning(er) holdt stødig stamp, men passet ikke med balansen de plane etappene kalibrerte (dybden endret seg ved en stamp og et dybderor som ingen stødig flyging har): utelatt fra estimatet.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="54"/>
         <source>The depth steps and speed changes disagreed among themselves more than they added (net buoyancy ± %1 kg with them, ± %2 kg from the steady segments alone): the estimate is the steady segments&apos;.</source>
         <translation>Dybdetrinnene og fartsendringene var mer uenige seg imellom enn de tilførte (netto oppdrift ± %1 kg med dem, ± %2 kg fra de stødige segmentene alene): estimatet er de stødige segmentenes.</translation>
     </message>

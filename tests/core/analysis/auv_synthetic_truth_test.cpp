@@ -25,6 +25,10 @@ AnalysisOptions optionsFor(const VehicleProfile& v, const AuvTruth& t) {
   const double extra = t.mass_kg - v.mass_kg;
   o.installed_kg = {0.5 * extra, 0.5 * extra};
   o.bg_m = t.cg_m.z();
+  // The fixture's depth changes are kinematic (zero angle of attack, the
+  // elevator at half the pitch) and its roll there is noise: no steady
+  // balance flies them, so they are not offered as dives.
+  o.segments.auv_steady_glides = false;
   return o;
 }
 

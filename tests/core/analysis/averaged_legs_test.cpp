@@ -145,6 +145,44 @@ TEST(AveragedLegs, ASteadySinkIsAGlideOutsideTheErrorsAtDepth) {
   for (const Segment& s : detectSegments(log, off).operating) EXPECT_NE(s.kind, SegmentKind::kGlide);
 }
 
+// A survey's depth change: the depth command steps from 26 to 78 m and the
+// propeller from 150 to 180 rpm at t = 600 s; the vehicle pitches down to
+// its -15 deg limit within 15 s, holds it for 80 s, and levels off. The
+// plateau, less 10 s at each end, is a steady dive. The settling time
+// after the rpm change used to cut it to 31 s and lose it.
+TEST(AveragedLegs, ThePitchLimitedMiddleOfADepthChangeIsAGlide) {
+  MissionLog log = makeLog(0.0, 1800.0, 1.0);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> n01;
+  auto pitch = [](double t) {
+    if (t < 600.0) return 0.8;
+    if (t < 615.0) return 0.8 - 15.8 * (t - 600.0) / 15.0;
+    if (t < 695.0) return -15.0;
+    if (t < 715.0) return -15.0 + 15.8 * (t - 695.0) / 20.0;
+    return 0.8;
+  };
+  auto depth = [](double t) {  // 0.55 m/s down on the plateau, ramps at both ends
+    if (t < 605.0) return 26.0;
+    if (t < 725.0) return 26.0 + 52.0 * (t - 605.0) / 120.0;
+    return 78.0;
+  };
+  fill(log, "depth_cmd", "m", [](std::size_t, double t) { return t < 600.0 ? 26.0 : 78.0; });
+  fill(log, "depth", "m", [&](std::size_t, double t) { return depth(t) + 0.02 * n01(rng); });
+  fill(log, "pitch", "deg", [&](std::size_t, double t) { return pitch(t) + 0.05 * n01(rng); });
+  fill(log, "elevator", "deg", [&](std::size_t, double t) { return (t < 600.0 || t > 715.0 ? -9.0 : -4.8) + 0.1 * n01(rng); });
+  fill(log, "speed", "m/s", [&](std::size_t, double t) { return (t < 600.0 ? 1.85 : 2.2) + 0.01 * n01(rng); });
+  fill(log, "prop_rpm", "rpm", [](std::size_t, double t) { return t < 600.0 ? 150.0 : std::min(180.0, 150.0 + 2.5 * (t - 600.0)); });
+  const Segmentation seg = detectSegments(log, SegmentOptions{});
+  std::vector<Segment> glides;
+  for (const Segment& s : seg.operating)
+    if (s.kind == SegmentKind::kGlide) glides.push_back(s);
+  ASSERT_EQ(glides.size(), 1u);
+  EXPECT_EQ(glides[0].phase, SegmentKind::kDive);
+  // The plateau is [615, 695] (less the 6 s smoothing at its edges), then 10 s off each end.
+  EXPECT_NEAR(glides[0].start_s, 625.0, 4.0);
+  EXPECT_NEAR(glides[0].end_s, 685.0, 4.0);
+}
+
 TEST(AveragedLegs, HistoryRowsKeepTheCycleMeans) {
   SteadySegmentMeans s;
   s.start_s = 100.0;
