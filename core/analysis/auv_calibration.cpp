@@ -287,6 +287,11 @@ void fitTransients(const Solved& s, const TransientResiduals& tr, double steady_
   out.transient_inflation = inflation_used;
 }
 
+// A floor on that scale: noise-free legs (chi2 = 0) must not make the data
+// exact. Sigmas at most five times narrower than propagated (the
+// identification truths went to 0.03).
+constexpr double kMinDataVarianceScale = 0.04;
+
 // One-sided 95 % upper bound of the scale of the data variance from the
 // steady rows' chi2 (Wilson-Hilferty quantile of chi2 with dof degrees of
 // freedom). The segments' residual covariance is propagated from the
@@ -297,10 +302,6 @@ void fitTransients(const Solved& s, const TransientResiduals& tr, double steady_
 // most likely because the channels move together on a leg (the autopilot
 // answers a wave with the elevator). The bound, not the point estimate,
 // narrows them, and only with enough rows to bound it.
-// A floor: noise-free legs (chi2 = 0) must not make the data exact. At
-// most five times narrower than propagated (the truths went to 0.03).
-constexpr double kMinDataVarianceScale = 0.04;
-
 double dataVarianceUpperBound(double chi2, double dof) {
   const double a = 2.0 / (9.0 * dof);
   const double q05 = dof * std::pow(1.0 - a - 1.645 * std::sqrt(a), 3);

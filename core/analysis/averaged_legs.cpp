@@ -16,16 +16,16 @@ constexpr double kSmooth_s = 30.0;       // boxcar that hides sensor noise, well
 constexpr double kHysteresis = 0.3;      // of the smoothed signal's sd: noise near the mean is no crossing
 constexpr double kPhaseErrorFrac = 0.15;  // cycle boundaries found to ~this of the sd per cycle
 
-// Samples of s inside [a, b], smoothed with a centred boxcar of kSmooth_s.
-TimeSeries smoothedIn(const TimeSeries& s, double a, double b) {
+// Samples of s inside [a, b], smoothed with a centred boxcar of width_s.
+TimeSeries smoothedIn(const TimeSeries& s, double a, double b, double width_s = kSmooth_s) {
   const auto lo = std::lower_bound(s.t.begin(), s.t.end(), a) - s.t.begin();
   const auto hi = std::upper_bound(s.t.begin(), s.t.end(), b) - s.t.begin();
   TimeSeries out;
   double sum = 0.0;
   std::ptrdiff_t l = lo, r = lo;  // running window [l, r)
   for (std::ptrdiff_t i = lo; i < hi; ++i) {
-    while (r < hi && s.t[r] <= s.t[i] + 0.5 * kSmooth_s) sum += s.v[r++];
-    while (s.t[l] < s.t[i] - 0.5 * kSmooth_s) sum -= s.v[l++];
+    while (r < hi && s.t[r] <= s.t[i] + 0.5 * width_s) sum += s.v[r++];
+    while (s.t[l] < s.t[i] - 0.5 * width_s) sum -= s.v[l++];
     out.t.push_back(s.t[i]);
     out.v.push_back(sum / static_cast<double>(r - l));
   }
@@ -97,26 +97,12 @@ std::optional<double> arrivedAndHeld(const TimeSeries& depth, const TimeSeries& 
   return arrived;
 }
 
-// The longest run in [a, b] where the pitch, smoothed over kPlateauSmooth_s,
-// stays within tol_deg of its median there: the pitch-limited middle of a
-// depth change (the autopilot's pitch limit), or a steady sink.
+// The longest run in [a, b] where the pitch, smoothed over 6 s, stays
+// within tol_deg of its median there: the pitch-limited middle of a depth
+// change (the autopilot's pitch limit), or a steady sink.
 std::optional<TimeWindow> pitchPlateau(const TimeSeries& pitch, double a, double b, double tol_deg) {
   constexpr double kPlateauSmooth_s = 6.0;
-  const auto lo = std::lower_bound(pitch.t.begin(), pitch.t.end(), a) - pitch.t.begin();
-  const auto hi = std::upper_bound(pitch.t.begin(), pitch.t.end(), b) - pitch.t.begin();
-  TimeSeries sm;
-  for (std::ptrdiff_t i = lo; i < hi; ++i) {
-    double sum = 0.0;
-    int n = 0;
-    for (std::ptrdiff_t j = i; j >= lo && pitch.t[j] >= pitch.t[i] - 0.5 * kPlateauSmooth_s; --j)
-      if (std::isfinite(pitch.v[j])) sum += pitch.v[j], ++n;
-    for (std::ptrdiff_t j = i + 1; j < hi && pitch.t[j] <= pitch.t[i] + 0.5 * kPlateauSmooth_s; ++j)
-      if (std::isfinite(pitch.v[j])) sum += pitch.v[j], ++n;
-    if (n > 0) {
-      sm.t.push_back(pitch.t[i]);
-      sm.v.push_back(sum / n);
-    }
-  }
+  const TimeSeries sm = smoothedIn(pitch, a, b, kPlateauSmooth_s);
   if (sm.size() < 3) return std::nullopt;
   std::vector<double> sorted = sm.v;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
