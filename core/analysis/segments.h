@@ -73,10 +73,10 @@ struct SegmentOptions {
   // angle of attack from level flight, which separates hull lift from
   // stern-plane lift and both from the net buoyancy.
   bool auv_steady_glides = true;
-  double auv_glide_min_s = 30.0;
+  double auv_glide_min_s = 20.0;
   double auv_glide_max_pitch_sd_deg = 1.5;
   double auv_glide_plateau_deg = 1.0;  // the pitch within this of its median over the dive or climb
-  double auv_glide_settle_s = 10.0;    // dropped at both ends of that plateau
+  double auv_glide_settle_s = 8.0;     // dropped at both ends of that plateau
   // Glides: trimmed at both ends (inflection, pump and battery moves).
   double glide_trim_s = 30.0;
 };

@@ -221,6 +221,7 @@ TEST(AuvSyntheticTruth, HuginHasNoHydrodynamicsButRollStillGivesY) {
   AuvTruth t;  // a Delphin2-like log analysed as a HUGIN: only the roll part applies
   AnalysisOptions o;
   o.bg_m = 0.06;
+  o.segments.auv_steady_glides = false;  // kinematic depth changes, as in optionsFor
   const AnalysisReport r = analyzeMission(makeAuvLog(d, t), v, o);
   EXPECT_FALSE(r.net_buoyancy_kg.known);
   EXPECT_TRUE(mentions(r.net_buoyancy_kg.why_not, "hydrodynamics"));
