@@ -96,10 +96,16 @@ TrimEstimate trimEstimateFromReport(const nlohmann::json& report, const std::str
     }
   }
   if (report.contains("calibration") && report["calibration"].is_array())
-    for (const nlohmann::json& c : report["calibration"]) {
+    for (std::size_t i = 0; i < report["calibration"].size(); ++i) {
+      const nlohmann::json& c = report["calibration"][i];
       if (!c.is_object() || !c.value("used", false) || !c.contains("value") || !c["value"].is_number()) continue;
       const std::string id = c.value("id", std::string());
-      const double sigma = c.contains("sigma") && c["sigma"].is_number() ? std::max(0.0, c["sigma"].get<double>()) : 0.0;
+      if (id != "hull_compressibility" && id != "thermal_expansion") continue;
+      // A used law widens the plan's margin by its sigma: a missing or
+      // negative one would narrow the margin without a word.
+      const JsonReader entry(c, file, "calibration[" + std::to_string(i) + "]");
+      const double sigma = requiredNumber(entry, "sigma", "a used buoyancy law needs its 1-sigma");
+      if (!(sigma >= 0.0)) entry.fail("sigma", "must be >= 0", "write the law's 1-sigma in its unit");
       if (id == "hull_compressibility") {
         e.hull_compressibility_per_dbar = c["value"].get<double>();
         e.hull_compressibility_sigma_per_dbar = sigma;

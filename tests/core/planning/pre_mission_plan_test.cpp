@@ -273,6 +273,32 @@ TEST(PreMissionPlan, BadInputNamesTheField) {
   EXPECT_THROW(planPolicyFromString("fast"), InputError);
 }
 
+// A used buoyancy law widens the plan's margin by its sigma; an edited
+// report with a negative or missing one is refused, naming the entry.
+TEST(TrimEstimateFromReport, AUsedLawNeedsANonNegativeSigma) {
+  nlohmann::json r = nlohmann::json::parse(R"({
+    "net_buoyancy_kg": 2.5, "net_buoyancy_sigma_kg": 0.2,
+    "water": {"temperature_degC": 6.5, "salinity_psu": 34.5, "depth_m": 49.6},
+    "calibration": [{"id": "propeller_torque", "value": 9.0, "sigma": -1.0, "used": true},
+                    {"id": "hull_compressibility", "value": 3e-6, "sigma": 1e-6, "used": true}]
+  })");
+  EXPECT_DOUBLE_EQ(trimEstimateFromReport(r, "a.json").hull_compressibility_sigma_per_dbar, 1e-6);
+  for (const nlohmann::json& bad_sigma : {nlohmann::json(-1e-6), nlohmann::json(nullptr)}) {
+    r["calibration"][1]["sigma"] = bad_sigma;
+    try {
+      trimEstimateFromReport(r, "a.json");
+      FAIL() << bad_sigma;
+    } catch (const InputError& err) {
+      const std::string m = err.what();
+      EXPECT_NE(m.find("a.json"), std::string::npos) << m;
+      EXPECT_NE(m.find("calibration[1]"), std::string::npos) << m;
+      EXPECT_NE(m.find("sigma"), std::string::npos) << m;
+    }
+  }
+  r["calibration"][1]["used"] = false;  // not used: the plan keeps the profile's law, its sigma unread
+  EXPECT_DOUBLE_EQ(trimEstimateFromReport(r, "a.json").hull_compressibility_sigma_per_dbar, 0.0);
+}
+
 TEST(TrimEstimateFromReport, ReadsTheAnalysisContract) {
   const nlohmann::json r = nlohmann::json::parse(R"({
     "net_buoyancy_kg": 2.5, "net_buoyancy_sigma_kg": 0.2,
