@@ -109,7 +109,7 @@ inline constexpr MessageFormat kThrustersInEverySegment{
     "or use the model check, which replays them"};
 inline constexpr MessageFormat kGlidesDropped{
     "analysis.glides_dropped",
-    "%1 dive(s) or climb(s) held a steady pitch but did not fit the balance the level legs calibrated (the depth "
+    "%1 dive(s) or climb(s) held a steady pitch but did not fit the balance the other legs calibrated (the depth "
     "changed at a pitch and elevator no steady flight has): left out of the estimate"};
 inline constexpr MessageFormat kTransientsDropped{
     "analysis.transients_dropped",

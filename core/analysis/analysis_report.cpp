@@ -117,6 +117,7 @@ nlohmann::json toJson(const AnalysisReport& r) {
       g["elevator_deg"] = num(s.elevator_deg);
       if (std::isfinite(s.net_buoyancy_kg)) g["net_buoyancy_kg"] = num(s.net_buoyancy_kg);
       if (std::isfinite(s.cg_x_mm)) g["cg_x_mm"] = num(s.cg_x_mm);
+      if (s.calibration_dropped) g["calibration_dropped"] = true;
     }
     segs.push_back(g);
   }

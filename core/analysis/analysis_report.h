@@ -47,6 +47,9 @@ struct SegmentReport {
   double elevator_deg = std::numeric_limits<double>::quiet_NaN();
   double net_buoyancy_kg = std::numeric_limits<double>::quiet_NaN();
   double cg_x_mm = std::numeric_limits<double>::quiet_NaN();
+  // An AUV dive or climb the calibration left out: its balance is not the
+  // level legs' (note analysis.glides_dropped).
+  bool calibration_dropped = false;
 };
 
 struct AnalysisReport {

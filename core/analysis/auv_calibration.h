@@ -132,6 +132,7 @@ struct SteadyCalibration {
   // prediction above 13.8, 2 dof, 99.9 %): pitch held flat while the depth
   // changes is not always a steady balance. Left out of the fit.
   std::size_t glides_dropped = 0;
+  std::vector<bool> segment_kept;  // per input segment: false for those glides
   // The buoyancy laws' change from the profile's, free: its chi2 from zero,
   // and whether it was significant and so used (else the profile's are held).
   double buoyancy_law_chi2 = 0.0;

@@ -395,6 +395,9 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     return out;
   }
   if (cal.glides_dropped > 0) out.notes.push_back(Message(msg::kGlidesDropped, {std::to_string(cal.glides_dropped)}));
+  out.segment_dropped.assign(segments.size(), false);
+  for (std::size_t j = 0; j < meas.size() && j < cal.segment_kept.size(); ++j)
+    out.segment_dropped[seg_index[j]] = !cal.segment_kept[j];
   if (cal.transient_residuals > 0 && !cal.transients_kept)
     out.notes.push_back(Message(msg::kTransientsDropped, {fmt("%.2f", cal.transient_net_sigma_n / units::g0),
                                                           fmt("%.2f", std::sqrt(cal.cov(kNet, kNet)) / units::g0)}));

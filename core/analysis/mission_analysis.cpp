@@ -244,6 +244,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
 
   // --- physical estimation -------------------------------------------------
   std::vector<double> segNb(nw, kNaN), segX(nw, kNaN);
+  std::vector<bool> segDropped(nw, false);  // glides the calibration left out
   if (!glider) {
     std::string why;
     const std::optional<SteadyHydroCoefficients> coeffs = steadyHydroFromProfile(v, why);
@@ -319,8 +320,9 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
       attachTransientReplay(log, v, o.installed_kg, replay_unfit, coeffs && coeffs->has_planes, rho, Bref, transient_fit,
                             ctx, rep);
     const AuvTrimEstimate e = estimateAuvTrim(means, coeffs ? &*coeffs : nullptr, why, ctx);
+    if (!e.segment_dropped.empty()) segDropped = e.segment_dropped;
     for (std::size_t w = 0; w < nw; ++w)
-      if (std::isfinite(e.segment_net_buoyancy_kg.empty() ? kNaN : e.segment_net_buoyancy_kg[w]))
+      if (std::isfinite(e.segment_net_buoyancy_kg.empty() ? kNaN : e.segment_net_buoyancy_kg[w]) && !segDropped[w])
         rep.steady_segments.push_back(means[w]);
     rep.net_buoyancy_kg = {e.buoyancy_identified, e.buoyancy_identified ? e.net_buoyancy_kg : kNaN,
                            e.buoyancy_identified ? e.net_buoyancy_sigma_kg : kNaN, e.buoyancy_why};
@@ -586,6 +588,7 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
     s.elevator_deg = elev.at(w).mean;
     s.net_buoyancy_kg = segNb[w];
     s.cg_x_mm = units::mToMm(segX[w]);
+    s.calibration_dropped = segDropped[w];
     rep.segments.push_back(s);
   }
   std::stable_sort(rep.segments.begin(), rep.segments.end(),

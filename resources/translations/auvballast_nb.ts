@@ -180,8 +180,8 @@
     </message>
     <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="54"/>
-        <source>%1 dive(s) or climb(s) held a steady pitch but did not fit the balance the level legs calibrated (the depth changed at a pitch and elevator no steady flight has): left out of the estimate.</source>
-        <translation>%1 dykk eller stigning(er) holdt stødig stamp, men passet ikke med balansen de plane etappene kalibrerte (dybden endret seg ved en stamp og et dybderor som ingen stødig flyging har): utelatt fra estimatet.</translation>
+        <source>%1 dive(s) or climb(s) held a steady pitch but did not fit the balance the other legs calibrated (the depth changed at a pitch and elevator no steady flight has): left out of the estimate.</source>
+        <translation>%1 dykk eller stigning(er) holdt stødig stamp, men passet ikke med balansen de andre etappene kalibrerte (dybden endret seg ved en stamp og et dybderor som ingen stødig flyging har): utelatt fra estimatet.</translation>
     </message>
     <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="54"/>
@@ -2116,6 +2116,16 @@
         <location filename="../../ui/widgets/segment_table.cpp" line="66"/>
         <source>dive/climb</source>
         <translation>dykk/stigning</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/segment_table.cpp" line="80"/>
+        <source>left out</source>
+        <translation>utelatt</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/segment_table.cpp" line="86"/>
+        <source>A dive or climb left out of the calibration: the other legs&apos; balance does not explain it.</source>
+        <translation>Et dykk eller en stigning utelatt fra kalibreringen: balansen fra de andre etappene forklarer det ikke.</translation>
     </message>
     <message>
         <location filename="../../ui/pages/deviation_plots_page.cpp" line="139"/>

@@ -77,11 +77,18 @@ void SegmentTable::show(const analysis::AnalysisReport* report, bool glider) {
     const bool auv_glide = !g && s.kind == analysis::SegmentKind::kGlide;
     const QString cells[5] = {
         QString::number(r + 1), QStringLiteral("%1–%2").arg(fixed(s.start_s / 60.0, 1)).arg(fixed(s.end_s / 60.0, 1)),
-        g ? cellText(s.depth_m, NAN, 1) : auv_glide ? tr("dive/climb") : cellText(s.depth_error_m, s.depth_error_ci95_m, 2),
+        g           ? cellText(s.depth_m, NAN, 1)
+        : auv_glide ? (s.calibration_dropped ? tr("left out") : tr("dive/climb"))
+                    : cellText(s.depth_error_m, s.depth_error_ci95_m, 2),
         g || auv_glide ? cellText(s.pitch_deg, NAN, 1) : cellText(s.pitch_error_deg, s.pitch_error_ci95_deg, 2),
         cellText(s.roll_deg, s.roll_ci95_deg, 2)};
     const QString tips[5] = {
-        {}, {}, g || auv_glide ? QString() : preciseText(s.depth_error_m, s.depth_error_ci95_m, 2),
+        {}, {},
+        g           ? QString()
+        : auv_glide ? (s.calibration_dropped
+                           ? tr("A dive or climb left out of the calibration: the other legs' balance does not explain it.")
+                           : QString())
+                    : preciseText(s.depth_error_m, s.depth_error_ci95_m, 2),
         g || auv_glide ? QString() : preciseText(s.pitch_error_deg, s.pitch_error_ci95_deg, 2),
         preciseText(s.roll_deg, s.roll_ci95_deg, 2)};
     for (int c = 0; c < 5; ++c) {

@@ -13,6 +13,7 @@
 #include <functional>
 #include <vector>
 
+#include "analysis/mission_analysis.h"
 #include "discrepancy/model_check.h"
 #include "discrepancy/plan_estimate.h"
 #include "discrepancy/vehicle_check.h"
@@ -93,6 +94,56 @@ TEST(Identification, TheDivesOfTheDepthChangesJoinTheLegs) {
   ASSERT_TRUE(r.looped);
   EXPECT_TRUE(r.one.safe);
   EXPECT_TRUE(r.one.spec) << "net " << r.one.net_op_kg << " pitch " << r.one.pitch_deg << " roll " << r.one.roll_deg;
+}
+
+// A dive the other legs' balance cannot explain is left out, and says so
+// where the technician looks: truth 1115's first dive, its elevator moved
+// 6 deg (a depth change flown at an elevator no steady flight has). The
+// report's segment list marks it (`calibration_dropped`, the wizard's
+// "left out"), the note counts it, and it is not among the
+// steady segments a later mission's history fit reads back. Tested against
+// the level legs alone it passed and moved the net buoyancy 5.4 kg; against
+// the level legs and the other dive it goes from 2 deg on (at 1 deg it
+// stays and moves the net 1.7 kg: the dives carry the estimate).
+TEST(Identification, ADiveTheLevelLegsCannotExplainIsMarkedLeftOut) {
+  Harness h;
+  MissionLog log;
+  double bg_m = 0.0;
+  h.on_first_log = [&](const MissionLog& l, const analysis::AnalysisReport& r, double, double) {
+    log = l;
+    bg_m = r.details.at("auv_estimate").at("bg_mm").get<double>() * 1e-3;
+  };
+  const CaseResult base = h.run(1115, false);
+  ASSERT_TRUE(base.known);
+  analysis::AnalysisOptions a;
+  a.log_name = "identification";
+  a.installed_kg = {7.2, 7.2, 25.2, 25.2};
+  a.bg_m = bg_m;
+  const analysis::AnalysisReport before = analysis::analyzeMission(log, h.profile(), a);
+  const auto glide = std::find_if(before.segments.begin(), before.segments.end(), [](const analysis::SegmentReport& g) {
+    return g.used && g.kind == analysis::SegmentKind::kGlide;
+  });
+  ASSERT_NE(glide, before.segments.end());
+  EXPECT_FALSE(glide->calibration_dropped);
+  const std::size_t steady_before = before.steady_segments.size();
+  LogChannel& elevator = *log.find("elevator");
+  for (std::size_t i = 0; i < log.rowCount(); ++i)
+    if (log.time[i] >= glide->start_s - 30.0 && log.time[i] <= glide->end_s + 30.0) elevator.values[i] += 6.0;
+  const analysis::AnalysisReport after = analysis::analyzeMission(log, h.profile(), a);
+  const auto same = std::find_if(after.segments.begin(), after.segments.end(), [&](const analysis::SegmentReport& g) {
+    return g.used && g.kind == analysis::SegmentKind::kGlide && std::abs(g.start_s - glide->start_s) < 1.0;
+  });
+  ASSERT_NE(same, after.segments.end());
+  EXPECT_TRUE(same->calibration_dropped);
+  EXPECT_NEAR(after.net_buoyancy_kg.value, before.net_buoyancy_kg.value, 2.0 * after.net_buoyancy_kg.sigma);
+  EXPECT_TRUE(std::any_of(after.notes.begin(), after.notes.end(),
+                          [](const Message& m) { return m.id() == "analysis.glides_dropped"; }));
+  EXPECT_EQ(after.steady_segments.size(), steady_before - 1);
+  for (const auto& g : after.steady_segments) EXPECT_GT(std::abs(g.start_s - same->start_s), 1.0);
+  const nlohmann::json j = analysis::toJson(after);
+  bool marked = false;
+  for (const auto& g : j.at("segments")) marked = marked || g.value("calibration_dropped", false);
+  EXPECT_TRUE(marked);
 }
 
 // Truth 1136 sinks below its command with the elevator at its stop on some
