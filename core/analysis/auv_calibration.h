@@ -70,7 +70,7 @@ struct CalibrationSegment {
   double density_kgm3 = 1025.0;
   double buoyancy_change_n = 0.0;  // B_i - B_reference from density and hull law (known)
   std::optional<BalanceRegressors> regressors;  // an averaged leg's cycle means; unset = from the means v
-  // A steady dive or climb (kGlide): kept only where the level legs'
+  // A steady dive or climb (kGlide): kept only where the other legs'
   // calibration explains it (calibrateSteady, glides_dropped).
   bool glide = false;
   // A segment of an earlier mission of the same configuration (history,
@@ -128,9 +128,10 @@ struct SteadyCalibration {
   // false: with their scatter the transients knew less than the steady
   // segments (a wider net buoyancy or CG x sigma), and p, cov are the steady ones.
   bool transients_kept = false;
-  // Glides the level legs' calibration could not explain (chi2 of the
-  // prediction above 13.8, 2 dof, 99.9 %): pitch held flat while the depth
-  // changes is not always a steady balance. Left out of the fit.
+  // Glides the other legs' calibration could not explain (chi2 of the
+  // prediction from every other kept segment above 13.8, 2 dof, 99.9 %):
+  // pitch held flat while the depth changes is not always a steady balance.
+  // Left out of the fit.
   std::size_t glides_dropped = 0;
   std::vector<bool> segment_kept;  // per input segment: false for those glides
   // The buoyancy laws' change from the profile's, free: its chi2 from zero,

@@ -127,7 +127,7 @@ struct AuvTrimEstimate {
   std::size_t history_segments_used = 0;  // steady segments of earlier missions in the calibration
   std::vector<double> segment_net_buoyancy_kg, segment_x_m;  // NaN where not computable
   // Per segment: a glide the calibration left out (its balance is not the
-  // level legs'); not written to the steady segments a later mission reads.
+  // other legs'); not written to the steady segments a later mission reads.
   std::vector<bool> segment_dropped;
   // Without an elevator channel only W x_G - l (B - W) is determined (l = M_e/Z_e).
   std::optional<double> moment_combination_nm, moment_combination_sigma_nm, plane_lever_m;
