@@ -23,6 +23,16 @@
 namespace auv::identification {
 namespace {
 
+// The truth within 2 sigma (net buoyancy, CG x), and one move flown safe
+// and in the spec.
+void expectCoveredAndInSpecAfterOneMove(const CaseResult& r) {
+  EXPECT_LE(std::abs(r.net_err_kg), 2.0 * r.net_sigma_kg);
+  EXPECT_LE(std::abs(r.x_err_mm), 2.0 * r.x_sigma_mm);
+  ASSERT_TRUE(r.looped);
+  EXPECT_TRUE(r.one.safe);
+  EXPECT_TRUE(r.one.spec) << "net " << r.one.net_op_kg << " pitch " << r.one.pitch_deg << " roll " << r.one.roll_deg;
+}
+
 TEST(Identification, DrawnTruthsAreCoveredByThePosteriorSigma) {
   const Harness h;
   int known = 0, cov_net = 0, cov_x = 0, cov_y = 0, y_known = 0;
@@ -89,11 +99,7 @@ TEST(Identification, TheDivesOfTheDepthChangesJoinTheLegs) {
   SCOPED_TRACE(r.truth.describe());
   ASSERT_TRUE(r.known);
   EXPECT_LT(r.net_sigma_kg, 0.6);
-  EXPECT_LE(std::abs(r.net_err_kg), 2.0 * r.net_sigma_kg);
-  EXPECT_LE(std::abs(r.x_err_mm), 2.0 * r.x_sigma_mm);
-  ASSERT_TRUE(r.looped);
-  EXPECT_TRUE(r.one.safe);
-  EXPECT_TRUE(r.one.spec) << "net " << r.one.net_op_kg << " pitch " << r.one.pitch_deg << " roll " << r.one.roll_deg;
+  expectCoveredAndInSpecAfterOneMove(r);
 }
 
 // A dive the other legs' balance cannot explain is left out, and says so
@@ -158,11 +164,7 @@ TEST(Identification, QuietLegsNarrowTheSigmaTenfoldAtMost) {
   ASSERT_TRUE(r.known);
   EXPECT_LT(r.net_sigma_kg, 0.3);
   EXPECT_GT(r.net_sigma_kg, 0.21);  // the floor holds: without it 0.19 kg
-  EXPECT_LE(std::abs(r.net_err_kg), 2.0 * r.net_sigma_kg);
-  EXPECT_LE(std::abs(r.x_err_mm), 2.0 * r.x_sigma_mm);
-  ASSERT_TRUE(r.looped);
-  EXPECT_TRUE(r.one.safe);
-  EXPECT_TRUE(r.one.spec) << "net " << r.one.net_op_kg << " pitch " << r.one.pitch_deg << " roll " << r.one.roll_deg;
+  expectCoveredAndInSpecAfterOneMove(r);
 }
 
 // Logs a technician must hear about before trusting any estimate
