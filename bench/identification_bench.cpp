@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
       std::ofstream(argv[i + 2]) << sim::truthHydrodynamicsDoc(nominal, sim::drawTruth(std::strtoull(argv[i + 1], nullptr, 10))).dump(1) << "\n";
       return 0;
     }
-    else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: logs (first, -2 second) and report of one truth
+    else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: logs and reports of one truth (first; -2: second, joint)
       // The flags given before it apply (--fly-manoeuvre, --log-interval, --transients, --pitch-bias).
       identification::Harness h;
       h.concealed.pitch_bias_deg = pitch_bias_deg;

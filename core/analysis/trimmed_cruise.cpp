@@ -75,10 +75,13 @@ std::optional<TrimmedCruise> trimmedCruise(const sim::VehicleModel& model, std::
   // for the trimmed state, so that what the model gets wrong about holding
   // depth cancels between them (a state the plan leaves as it was keeps its
   // speed); where that model has no balance, the segment's own means.
+  // The trimmed state (g null) where the calibrated model has no balance is
+  // NaN: no speed is predicted there (see the root search below).
   auto levelSurge = [&](double rho, double B, double x_g, double u, double rpm, const SteadySegmentMeans* g) {
     if (e.calibrated) {
       const LevelFlight f = solveLevelFlight(*e.calibrated, {W, B, x_g, bg, u, rho, 0.0, 0.0});
       if (f.ok) return surgeForce(dyn, rho, W, B, rpm, -units::degToRad(f.elevator_deg), u, f.pitch_rad, 0.0, 0.0);
+      if (!g) return std::nan("");
     }
     if (!g) return surgeForce(dyn, rho, W, B, rpm, 0.0, u, 0.0, 0.0, 0.0);
     return surgeForce(dyn, rho, W, B, rpm, -units::degToRad(g->elevator_deg.mean - e.elevator_bias_deg), u,
@@ -106,9 +109,21 @@ std::optional<TrimmedCruise> trimmedCruise(const sim::VehicleModel& model, std::
   const double B = W + units::g0 * net_after_kg;
   const double x_g = e.after_move ? e.after_move->x_g_m : e.x_m;  // the state the plan aims for
   auto balance = [&](double u) { return levelSurge(rho, B, x_g, u, e.cruise_rpm, nullptr) - out.extra_drag_n_per_mps2 * u * u; };
-  // Thrust falls and drag grows with speed: one root, found by bisection.
-  double lo = out.logged_speed_mps / 3.0, hi = 2.0 * out.logged_speed_mps;
-  if (!(balance(lo) > 0.0) || !(balance(hi) < 0.0)) return std::nullopt;
+  // Thrust falls and drag grows with speed: the fastest speed where the
+  // balance crosses zero between two speeds the model can trim at, refined
+  // by bisection. A crossing onto speeds where the model has no balance is
+  // no root: the extrapolation from a log flown with the elevator at its
+  // stop put one there (truth 4131: 0.70 m/s at 156 rpm, logged 1.82, and
+  // the plan's roll 1.6 deg off).
+  const double u_min = out.logged_speed_mps / 3.0, u_max = 2.0 * out.logged_speed_mps;
+  constexpr int kGrid = 40;
+  double lo = 0.0, hi = 0.0, above = balance(u_max);
+  for (int k = kGrid - 1; k >= 0 && hi == 0.0; --k) {
+    const double u = u_min + (u_max - u_min) * k / kGrid, b = balance(u);
+    if (b > 0.0 && above <= 0.0) lo = u, hi = u_min + (u_max - u_min) * (k + 1) / kGrid;
+    above = b;
+  }
+  if (hi == 0.0) return std::nullopt;
   for (int it = 0; it < 60; ++it) {
     const double mid = 0.5 * (lo + hi);
     (balance(mid) > 0.0 ? lo : hi) = mid;

@@ -303,6 +303,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   a2.history = {{rep.steady_segments, kInstalled}};
   a2.use_transients = use_transients;
   const analysis::AnalysisReport rep2 = analysis::analyzeMission(f2.log, profile_, a2);
+  if (!dump_prefix.empty()) std::ofstream(dump_prefix + "-2.json") << analysis::toJson(rep2).dump(1) << "\n";
   r.looped = true;
   judge(f2, rep2, r.one);
   if (!rep2.net_buoyancy_kg.known) return r;

@@ -67,7 +67,8 @@ struct CaseResult {
 class Harness {
  public:
   Harness();
-  // dump_prefix non-empty: writes <prefix>.csv (the first log) and <prefix>.json (its report).
+  // dump_prefix non-empty: writes <prefix>.csv (the first log) and <prefix>.json (its report), and for
+  // the closed loop <prefix>-2.csv and <prefix>-2.json (the second mission and its joint report).
   CaseResult run(std::uint64_t seed, bool closed_loop, const std::string& dump_prefix = "") const;
   const VehicleProfile& profile() const { return profile_; }
   // Log row interval of the flown missions (the survey's default: 1 s).

@@ -310,6 +310,24 @@ TEST(Identification, TheRollAfterAMoveIsPredictedAtTheTrimmedCruiseSpeed) {
   EXPECT_GE(close, n - 2);
 }
 
+// Item 8 on a survey not flown as commanded: truth 4131 flew its second
+// mission 12.6 kg light with the elevator at its stop on every leg (climbs
+// and dives, no level flight). Balanced there, the surge model found a
+// trimmed speed of 0.70 m/s at 156 rpm (logged 1.82) only where its level
+// balance stops existing; the plan levelled a torque that was not there
+// and the roll after the second move was -1.67 deg against +0.04 planned.
+// Now no trimmed speed is predicted there and the plan levels the torque
+// it measured.
+TEST(Identification, NoTrimmedSpeedIsExtrapolatedFromAnElevatorAtItsStop) {
+  const Harness h;
+  const CaseResult r = h.run(4131, true);
+  SCOPED_TRACE(r.truth.describe());
+  ASSERT_TRUE(r.twice);
+  EXPECT_LE(std::abs(r.two.roll_deg - r.two.planned_roll_deg), 0.25)
+      << "flown " << r.two.roll_deg << " planned " << r.two.planned_roll_deg;
+  EXPECT_TRUE(r.two.safe);
+}
+
 // Item 6 with item 8: the model check of truth 1101 (no concealed effect)
 // names a pitch-sensor bias, and its own ballast fit is about 10 sigma off
 // (net 6.46 +- 0.11 kg against 5.2; its sigma is the replay fit's for its own
