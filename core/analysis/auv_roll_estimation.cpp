@@ -82,6 +82,18 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
   auto rollSe = [&](const SteadySegmentMeans* g) {
     return std::max(std::isfinite(g->roll_deg.se) ? g->roll_deg.se : 0.0, 1e-3);
   };
+  // Mean cos(pitch) of the segments the cruise roll is read on (weighted as
+  // the roll): the heeling moment there is W cos(theta) (BG sin(phi) - y cos(phi)).
+  double cruise_cos_pitch = 1.0;
+  auto cosPitchOf = [&](auto&& in_cruise) {
+    double w = 0.0, wc = 0.0;
+    for (const auto* g : s)
+      if (in_cruise(*g)) {
+        const double wi = 1.0 / (rollSe(g) * rollSe(g));
+        w += wi, wc += wi * (g->pitch_deg.valid() ? std::cos(g->pitch_deg.mean * d2r) : 1.0);
+      }
+    return w > 0.0 ? wc / w : 1.0;
+  };
   if (have_rpm && s.size() >= 2 && n2max > ctx.min_speed2_spread * n2min && n2max > 0) {
     Eigen::MatrixXd A(static_cast<Eigen::Index>(s.size()), 2);
     Eigen::VectorXd b(A.rows());
@@ -132,6 +144,7 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     if (su > 0.0) out.cruise_speed_mps = swu / su;
     out.cruise_known = true;
     out.cruise_rpm = rpm_cruise;
+    cruise_cos_pitch = cosPitchOf([&](const SteadySegmentMeans& g) { return sameRpm(g.prop_rpm.mean, rpm_cruise); });
     out.cruise_roll_deg = swx / sw;
     out.cruise_roll_sigma_deg = std::sqrt(1.0 / sw);
     out.y_basis = "static (propeller torque fitted over " + std::to_string(s.size()) + " segments at different rpm)";
@@ -164,6 +177,7 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
     out.cruise_known = !all_stopped;
     out.cruise_roll_deg = out.roll_static_deg;
     out.cruise_roll_sigma_deg = out.roll_static_sigma_deg;
+    cruise_cos_pitch = cosPitchOf([](const SteadySegmentMeans&) { return true; });
     if (!ctx.log_has_rpm) {
       out.y_basis = "static_assumed";
       out.warnings.push_back(Message(msg::kNoPropRpm));
@@ -201,17 +215,21 @@ void estimateRoll(std::span<const SteadySegmentMeans> segs, const AuvTrimContext
   yOf(out.roll_static_deg, out.roll_static_sigma_deg, out.y_m, out.y_sigma_m);
   out.y_identified = true;
   if (out.cruise_known) {
-    // The heeling moment at cruise, W BG sin(phi) = W y cos(phi) + Q, as the
-    // CG y that would heel the vehicle as much at zero roll: y + Q / W. Zeroing
-    // it levels the vehicle in cruise; BG tan(phi) would overshoot by
-    // (Q / W)(1 / cos(phi) - 1), a degree at the 18 deg a strong torque gives.
+    // The heeling moment at cruise, W cos(theta) (BG sin(phi) - y cos(phi)) = Q,
+    // as the CG y that would heel the vehicle as much at zero roll in level
+    // flight: y + Q / W. Zeroing it levels the vehicle in cruise; BG tan(phi)
+    // would overshoot by (Q / W)(1 / cos(phi) - 1), a degree at the 18 deg a
+    // strong torque gives. cos(theta), as the torque fit has it: a survey
+    // flown 45-64 deg nose down (truth 2127, 27 kg heavy) doubled the torque
+    // read from its roll, and the vehicle rolled 9 deg after the move.
     // The static y is known where the torque was fitted; otherwise the roll
     // is taken as torque (the y (1 - cos) term is second order).
     const double phi = units::degToRad(out.cruise_roll_deg);
     const double y_static = out.y_basis.rfind("static (propeller", 0) == 0 ? out.y_m : 0.0;
-    out.y_cruise_m = bg * std::sin(phi) + y_static * (1.0 - std::cos(phi));
-    out.y_cruise_sigma_m = std::hypot(std::abs(bg * std::cos(phi)) * units::degToRad(out.cruise_roll_sigma_deg),
-                                      bg_sigma * std::sin(phi));
+    out.y_cruise_m = y_static + cruise_cos_pitch * (bg * std::sin(phi) - y_static * std::cos(phi));
+    out.y_cruise_sigma_m =
+        std::hypot(std::abs(cruise_cos_pitch * bg * std::cos(phi)) * units::degToRad(out.cruise_roll_sigma_deg),
+                   cruise_cos_pitch * bg_sigma * std::sin(phi));
     out.y_cruise_identified = true;
   }
 }

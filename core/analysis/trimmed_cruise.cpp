@@ -88,23 +88,31 @@ std::optional<TrimmedCruise> trimmedCruise(const sim::VehicleModel& model, std::
                       units::degToRad(g->pitch_deg.mean), units::degToRad(g->roll_deg.valid() ? g->roll_deg.mean : 0.0),
                       g->depth_rate_mps.valid() ? g->depth_rate_mps.mean : 0.0);  // log sign -> paper sign
   };
-  // The drag the model misses, from the cruise segments (which held speed).
-  double sw = 0.0, sk = 0.0, su = 0.0, rho_sum = 0.0;
+  // The drag the model misses, from the cruise segments (which held speed)
+  // that flew a state the model can balance: not with the elevator at its
+  // stop or steeper than the level solver's 30 deg. Truth 2127 flew its
+  // first survey 27 kg heavy at 0.2-0.5 m/s and 45-64 deg nose down; its
+  // missing drag from there kept every speed over 1 m/s out of reach, and
+  // the plan levelled the torque of 0.48 m/s: rolled -12.6 deg after the
+  // move, at 1.75 m/s. Without such a segment the model's own drag.
+  double sw = 0.0, su = 0.0, rho_sum = 0.0, sk_w = 0.0, sk = 0.0;
+  const double stop_deg = model.planes.max_deg - 0.5;
   for (const SteadySegmentMeans& g : segments) {
     if (g.from_history || g.thruster_rpm > 0.0 || !sameRpm(g.prop_rpm.mean, e.cruise_rpm)) continue;
     if (!g.speed_mps.valid() || !g.pitch_deg.valid() || !g.elevator_deg.valid() || !(g.speed_mps.mean > 0.1)) continue;
     const double rho = std::isfinite(g.density_kgm3) ? g.density_kgm3 : ctx.density_kgm3;
-    const double B = W + units::g0 * e.net_buoyancy_kg + g.buoyancy_change_n;
     const double u = g.speed_mps.mean;
-    const double F = levelSurge(rho, B, e.x_m, u, g.prop_rpm.mean, &g);
     const double w = g.end_s - g.start_s;
-    sw += w, sk += w * F / (u * u), su += w * u, rho_sum += w * rho;
+    sw += w, su += w * u, rho_sum += w * rho;
+    if (std::abs(g.elevator_deg.mean - e.elevator_bias_deg) >= stop_deg || std::abs(g.pitch_deg.mean) > 30.0) continue;
+    const double B = W + units::g0 * e.net_buoyancy_kg + g.buoyancy_change_n;
+    sk_w += w, sk += w * levelSurge(rho, B, e.x_m, u, g.prop_rpm.mean, &g) / (u * u);
   }
   if (!(sw > 0.0)) return std::nullopt;
   TrimmedCruise out;
   out.rpm = e.cruise_rpm;
   out.logged_speed_mps = su / sw;
-  out.extra_drag_n_per_mps2 = sk / sw;
+  out.extra_drag_n_per_mps2 = sk_w > 0.0 ? sk / sk_w : 0.0;
   const double rho = rho_sum / sw;
   const double B = W + units::g0 * net_after_kg;
   const double x_g = e.after_move ? e.after_move->x_g_m : e.x_m;  // the state the plan aims for
@@ -115,8 +123,10 @@ std::optional<TrimmedCruise> trimmedCruise(const sim::VehicleModel& model, std::
   // no root: the extrapolation from a log flown with the elevator at its
   // stop put one there (truth 4131: 0.70 m/s at 156 rpm, logged 1.82, and
   // the plan's roll 1.6 deg off).
-  const double u_min = out.logged_speed_mps / 3.0, u_max = 2.0 * out.logged_speed_mps;
-  constexpr int kGrid = 40;
+  // Up to twice the logged speed, and at least 4 m/s (more than an AUV's
+  // top speed): a survey flown far from trim can be several times slower.
+  const double u_min = out.logged_speed_mps / 3.0, u_max = std::max(2.0 * out.logged_speed_mps, 4.0);
+  constexpr int kGrid = 80;
   double lo = 0.0, hi = 0.0, above = balance(u_max);
   for (int k = kGrid - 1; k >= 0 && hi == 0.0; --k) {
     const double u = u_min + (u_max - u_min) * k / kGrid, b = balance(u);

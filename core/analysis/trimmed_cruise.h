@@ -25,7 +25,7 @@ namespace auv::analysis {
 
 // Needs the cruise rpm, a fitted propeller torque (several propeller speeds
 // in the log) and the model's propeller; nullopt otherwise or when the
-// balance has no root between a third of and twice the logged speed.
+// balance has no root between a third of the logged speed and twice it (at least 4 m/s).
 // `net_after_kg`: the net buoyancy the plan aims for.
 std::optional<TrimmedCruise> trimmedCruise(const sim::VehicleModel& model, std::span<const SteadySegmentMeans> segments,
                                            const AuvTrimEstimate& e, const AuvTrimContext& ctx, double net_after_kg);
