@@ -145,12 +145,21 @@ TEST(SimulateCli, SimulateThenAnalyzeRecoversTheBallastError) {
   EXPECT_LT(k["net_buoyancy_sigma_kg"].get<double>(), 0.5 * j["net_buoyancy_sigma_kg"].get<double>());
   // Roll at cruise (160 rpm) and the CG y that levels the vehicle there.
   EXPECT_GT(k["cruise"]["prop_rpm"].get<double>(), 150.0);
-  // The heeling moment at cruise as a CG y at zero roll: BG sin(roll) plus
-  // y (1 - cos(roll)) when the torque fit separated the static y.
-  const double roll = k["cruise"]["roll_deg"].get<double>() * std::numbers::pi / 180.0;
+  // The heeling moment at cruise as a CG y at zero roll in level flight:
+  // y + cos(pitch) (BG sin(roll) - y cos(roll)), y the static CG y when the
+  // torque fit separated it (else 0), pitch that of the cruise segments.
+  const double d2r = std::numbers::pi / 180.0, roll = k["cruise"]["roll_deg"].get<double>() * d2r;
+  const double cruise_rpm = k["cruise"]["prop_rpm"].get<double>();
+  double cos_sum = 0.0;
+  int n_cruise = 0;
+  for (const auto& g : k["segments"])
+    if (g["used"].get<bool>() && g["prop_rpm"].is_number() && std::abs(g["prop_rpm"].get<double>() - cruise_rpm) <= 0.02 * cruise_rpm)
+      cos_sum += std::cos(g["pitch_deg"].get<double>() * d2r), ++n_cruise;
+  ASSERT_GT(n_cruise, 0);
   const bool fitted = k["cg_offset_y_basis"].get<std::string>().rfind("static (propeller", 0) == 0;
   const double y_static = fitted ? k["cg_offset_mm"]["y"].get<double>() : 0.0;
-  EXPECT_NEAR(k["cruise"]["cg_y_mm"].get<double>(), 20.0 * std::sin(roll) + y_static * (1.0 - std::cos(roll)), 1e-5);
+  EXPECT_NEAR(k["cruise"]["cg_y_mm"].get<double>(),
+              y_static + cos_sum / n_cruise * (20.0 * std::sin(roll) - y_static * std::cos(roll)), 1e-5);
   const auto bad = runCli("analyze --vehicle " + profile_path + " --log " + log + " --coefficient-sigma 10%");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("coefficient-sigma"), std::string::npos) << bad.err;
