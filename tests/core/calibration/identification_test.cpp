@@ -310,6 +310,12 @@ TEST(Identification, TheRollAfterAMoveIsPredictedAtTheTrimmedCruiseSpeed) {
   EXPECT_GE(close, n - 2);
 }
 
+// The roll a move flew within max_miss_deg of what its plan predicted, and safe.
+void expectRollAsPlanned(const CaseResult::Outcome& o, double max_miss_deg) {
+  EXPECT_LE(std::abs(o.roll_deg - o.planned_roll_deg), max_miss_deg) << "flown " << o.roll_deg << " planned " << o.planned_roll_deg;
+  EXPECT_TRUE(o.safe);
+}
+
 // Item 8 on a survey not flown as commanded: truth 4131 flew its second
 // mission 12.6 kg light with the elevator at its stop on every leg (climbs
 // and dives, no level flight). Balanced there, the surge model found a
@@ -323,9 +329,7 @@ TEST(Identification, NoTrimmedSpeedIsExtrapolatedFromAnElevatorAtItsStop) {
   const CaseResult r = h.run(4131, true);
   SCOPED_TRACE(r.truth.describe());
   ASSERT_TRUE(r.twice);
-  EXPECT_LE(std::abs(r.two.roll_deg - r.two.planned_roll_deg), 0.25)
-      << "flown " << r.two.roll_deg << " planned " << r.two.planned_roll_deg;
-  EXPECT_TRUE(r.two.safe);
+  expectRollAsPlanned(r.two, 0.25);
 }
 
 // Item 8 on a survey flown far from trim: truth 2127 flew its first survey
@@ -342,9 +346,7 @@ TEST(Identification, ASurveyFlownSteeplyNoseDownLevelsTheTrimmedVehiclesRoll) {
   const CaseResult r = h.run(2127, true);
   SCOPED_TRACE(r.truth.describe());
   ASSERT_TRUE(r.looped);
-  EXPECT_LE(std::abs(r.one.roll_deg - r.one.planned_roll_deg), 0.5)
-      << "flown " << r.one.roll_deg << " planned " << r.one.planned_roll_deg;
-  EXPECT_TRUE(r.one.safe);
+  expectRollAsPlanned(r.one, 0.5);
 }
 
 // Item 6 with item 8: the model check of truth 1101 (no concealed effect)
