@@ -77,11 +77,15 @@ double AuvCheckModel::munkPrime() const {
   return (model_.hydro.Xudot_kg - model_.hydro.Zwdot_kg) / (0.5 * kRhoRef * L * L * L);
 }
 
+// The part of it the simulator adds on top of M_w': none when the profile's
+// M_w' holds it (munk_moment "inside_Mw").
+double AuvCheckModel::addedMunkPrime() const { return model_.hydro.munk_factor * munkPrime(); }
+
 // The linear u w pitch-moment coefficient the vehicle flies with. Whether a
 // tabulated M_w' holds the Munk moment or not changes even its sign, and a
 // log sees only the sum: one constant, prior sigma 30 % of M_w' plus half
 // the Munk moment (inside or on top are both within 2 sigma).
-double AuvCheckModel::profileNetMw() const { return model_.hydro.Mw_prime + munkPrime(); }
+double AuvCheckModel::profileNetMw() const { return model_.hydro.Mw_prime + addedMunkPrime(); }
 double AuvCheckModel::netMwSigma() const {
   return std::max(kGroupSigma * std::abs(model_.hydro.Mw_prime) + 0.5 * std::abs(munkPrime()), 1e-4);
 }
@@ -95,8 +99,8 @@ sim::VehicleModel AuvCheckModel::calibratedModel(const Params& p) const {
   m.hydro.Zq_prime *= z;
   const bool analysisGroups = crossflowFromAnalysis();
   if (!analysisGroups) m.hydro.Zww_kg_per_m *= z;
-  // The simulator adds the Munk moment to M_w' itself (Coriolis terms).
-  m.hydro.Mw_prime = p.nuisance[kNetMw] - munkPrime();
+  // The simulator adds the Munk moment to M_w' itself (Coriolis terms) unless M_w' holds it.
+  m.hydro.Mw_prime = p.nuisance[kNetMw] - addedMunkPrime();
   m.hydro.Mww_kg *= p.nuisance[kCrossflow];
   if (analysisGroups) {
     // Held at the analysis's crossflow_scale, which is one crossflow drag
@@ -190,6 +194,19 @@ const AuvCheckOptions::CalibrationPrior* AuvCheckModel::calibrationPrior(const s
   for (const auto& c : opt_.calibration_priors)
     if (c.id == id && std::isfinite(c.value) && c.sigma > 0.0) return &c;
   return nullptr;
+}
+
+// quadratic_pitch_damping s makes M_|q|q (1 + s) times the calibrated one
+// (the equation error, the replay and --accept alike). Its plausible range
+// speaks of the vehicle against the hydrodynamics table (0.1 to 6 times the
+// table's M_|q|q), so with the crossflow group held at the analysis's c,
+// which scales M_|q|q already, it is (1 + lower) / c - 1 to (1 + upper) / c - 1.
+std::pair<double, double> AuvCheckModel::termRange(std::size_t term) const {
+  const PhysicsTerm& t = termLibrary()[term];
+  const AuvCheckOptions::CalibrationPrior* c = calibrationPrior("crossflow_pitch_moment");
+  if (t.id != "quadratic_pitch_damping" || c == nullptr) return {t.lower, t.upper};
+  const double scale = std::max(c->value, 0.05);
+  return {(1.0 + t.lower) / scale - 1.0, (1.0 + t.upper) / scale - 1.0};
 }
 
 // Free, the check keeps its own groups (Z_ww with the heave derivatives,

@@ -318,7 +318,8 @@ void AuvCheckModel::equationError(const Params& prm, std::span<const std::uint32
     in.temperature_degC = g.T;
     in.reference_temperature_degC = hull.reference_temperature_degC;
     in.prop_torque_basis = g.rpm * g.rpm * (g.rho / kRhoRef) * kt;
-    in.pitch_damping_basis = model_.hydro.Mqq_kgm2 * std::abs(q0) * q0;
+    // M_|q|q as the calibrated model has it: the replay and --accept scale that one.
+    in.pitch_damping_basis = cal.hydro.Mqq_kgm2 * std::abs(q0) * q0;
     Effects e;
     applyEffects(tv, in, e);
     depthOffset[j] = e.depth_offset_m;

@@ -113,6 +113,7 @@ class AuvCheckModel final : public CheckModel {
   std::vector<HeldTermValue> heldTerms() const override;
   double profileTermValue(std::size_t term) const override;
   bool applicable(std::size_t term) const override;
+  std::pair<double, double> termRange(std::size_t term) const override;
   std::vector<Channel> equationChannels() const override { return eq_; }
   void equationError(const Params& p, std::span<const std::uint32_t> rows, double* out) const override;
   std::vector<Channel> simulationChannels() const override {
@@ -152,6 +153,7 @@ class AuvCheckModel final : public CheckModel {
   bool crossflowFromAnalysis() const;
   Eigen::VectorXd holdAtAnalysis(Eigen::VectorXd bound) const;  // held groups' bounds = their value  // the crossflow group is the analysis's (Z_ww, M_ww, M_qq)
   double munkPrime() const;
+  double addedMunkPrime() const;
   double profileNetMw() const;
   double netMwSigma() const;
 

@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -102,6 +103,11 @@ class CheckModel {
   // term's reported value is this plus the fitted increment: what the
   // vehicle has, not a correction).
   virtual double profileTermValue(std::size_t /*term*/) const { return 0.0; }
+  // The plausible range of library term `term` in this model's units: the
+  // library's, unless the model scales the term's basis by a calibration.
+  virtual std::pair<double, double> termRange(std::size_t term) const {
+    return {termLibrary()[term].lower, termLibrary()[term].upper};
+  }
 
   // Whether this log can show the term at all (channels present, vehicle kind).
   virtual bool applicable(std::size_t term) const = 0;

@@ -45,7 +45,7 @@ ModelCheckResult runModelCheck(const CheckModel& m, const ModelCheckOptions& o) 
   const int U = S.unitCount();
   R.units = U;
 
-  FitSetup s{m, m.equationChannels(), 0, 0, m.nuisanceScale(), m.nuisanceLower(), m.nuisanceUpper(), {}, m.priors(), {}};
+  FitSetup s{m, m.equationChannels(), 0, 0, m.nuisanceScale(), m.nuisanceLower(), m.nuisanceUpper(), {}, m.priors(), {}, {}};
   s.C = s.eq.size();
   s.nN = static_cast<int>(s.nScale.size());
   R.nuisance_names = m.nuisanceNames();

@@ -71,10 +71,12 @@ void writeCalibration(nlohmann::json& out, const ModelCheckResult& r, const std:
     }
   }
   if (const CalibrationValue* c = calibrationOf(r, "net_pitch_moment_derivative"); c && hydro) {
-    // The simulator adds the Munk moment (X_udot - Z_wdot) u w to M_w' itself.
+    // The simulator adds the Munk moment (X_udot - Z_wdot) u w to M_w' itself,
+    // unless the profile's M_w' holds it.
     nlohmann::json& h = out["hydrodynamics"];
     const double L = h.value("reference_length_m", numberAt(out, "hull", "length_m", 1.0));
-    const double munkPrime = (h.value("Xudot_kg", 0.0) - h.value("Zwdot_kg", 0.0)) / (0.5 * 1025.0 * L * L * L);
+    const double added = h.value("munk_moment", std::string("added")) == "inside_Mw" ? 0.0 : 1.0;
+    const double munkPrime = added * (h.value("Xudot_kg", 0.0) - h.value("Zwdot_kg", 0.0)) / (0.5 * 1025.0 * L * L * L);
     h["Mw_prime"] = c->value - munkPrime;
     record(*c, "hydrodynamics.Mw_prime");
   }

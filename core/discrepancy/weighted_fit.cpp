@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <tuple>
 
 #include "discrepancy/levenberg_marquardt.h"
 
@@ -36,8 +37,7 @@ LmProblem makeProblem(const FitSetup& s, const std::vector<std::uint32_t>& rows,
     const PhysicsTerm& t = termLibrary()[terms[k]];
     const auto j = s.nN + static_cast<Eigen::Index>(k);
     p.scale[j] = t.typical;
-    p.lower[j] = t.lower;
-    p.upper[j] = t.upper;
+    std::tie(p.lower[j], p.upper[j]) = s.m.termRange(terms[k]);
     for (const auto& [term, value] : s.pinned_terms)
       if (term == terms[k]) p.lower[j] = p.upper[j] = value;
   }

@@ -139,9 +139,9 @@ TEST(HullLaw, AThermalExpansionTheProfileLacksIsNamedFromTheLegMeans) {
       fa = fk = f;
       fa.thermal_expansion_per_degC += s_alpha;
       fk.compressibility_per_dbar += s_kappa;
-      auto change = [&](const HullModel& m) {
-        return pt.state.density_kgm3 * m.volumeAt(pt.state.temperature_degC, pt.state.pressure_dbar) -
-               lw.density_kgm3 * m.volumeAt(lw.temperature_degC, lw.pressure_dbar);
+      auto change = [&](const HullModel& hull) {
+        return pt.state.density_kgm3 * hull.volumeAt(pt.state.temperature_degC, pt.state.pressure_dbar) -
+               lw.density_kgm3 * hull.volumeAt(lw.temperature_degC, lw.pressure_dbar);
       };
       law_oracle = std::max(law_oracle, std::hypot(change(fa) - change(f), change(fk) - change(f)));
     }
@@ -224,8 +224,11 @@ TEST(HullLaw, APitchSensorBiasIsNotTakenForAHullLaw) {
         EXPECT_EQ(w.args()[2], "1");
       }
     EXPECT_TRUE(warned);
-    for (const auto& c : r.calibration)
-      if (c.id == "crossflow_pitch_moment") EXPECT_FALSE(c.from_analysis);
+    for (const auto& c : r.calibration) {
+      if (c.id == "crossflow_pitch_moment") {
+        EXPECT_FALSE(c.from_analysis);
+      }
+    }
     ASSERT_FALSE(r.missing_physics.empty());
     const discrepancy::MissingPhysics& m = r.missing_physics.front();
     EXPECT_EQ(m.id, "pitch_sensor_bias");

@@ -15,7 +15,7 @@ TEST(PhysicsTerms, TheLibraryHasTheIssuesIdsAndUnits) {
       {"hull_compressibility", "1/dbar"}, {"thermal_expansion", "1/degC"},
       {"propeller_torque", "N*m/rpm^2"},   {"mass_drift", "kg/h"},
       {"pitch_sensor_bias", "deg"},        {"roll_sensor_bias", "deg"},
-      {"depth_sensor_offset", "m"},        {"quadratic_pitch_damping", "scale of the nominal coefficient"},
+      {"depth_sensor_offset", "m"},        {"quadratic_pitch_damping", "scale of the calibrated coefficient"},
       {"vertical_current", "m/s"}};
   std::set<std::string> ids;
   for (const auto& [id, unit] : expected) {
