@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "analysis/analysis_report.h"
+#include "delphin_test_log.h"
 #include "analysis/mission_analysis.h"
 #include "discrepancy/model_check_report.h"
 #include "discrepancy/profile_update.h"
@@ -46,15 +47,7 @@ struct Auv {
   VehicleProfile profile = loadVehicleProfile(kVehicles + "delphin2.json");
   sim::SimVehicle vehicle = sim::loadSimVehicle(profile, AUV_RESOURCE_DIR);
   MissionLog log;
-  Auv() {
-    SyntheticAuvTruth t;
-    t.ballast_error.net_buoyancy_kg = 0.2;
-    SyntheticAuvMission m;
-    m.legs_count = 3;
-    m.leg_s = 120.0;
-    m.seed = 4;
-    log = synthesizeAuvLog(vehicle, "delphin2", t, m);
-  }
+  Auv() : log(test_logs::delphinTestLog(vehicle)) {}
 };
 const Auv& auvCase() {
   static const Auv a;
