@@ -51,5 +51,22 @@ TEST(LogImportMission, SeveralFilesAreMerged) {
   EXPECT_EQ(o.report.count(ReadProblemKind::kTimeNotIncreasing), 1);  // the overlap, said once
 }
 
+// The job runs until its outcome has been delivered, not merely until the
+// worker returned: a page polled between the two saw a finished import with
+// no log (the thesis-sequence test failed that way under load).
+TEST(LogImportMission, TheJobRunsUntilItsOutcomeIsDelivered) {
+  LogImportJob job;
+  bool delivered = false;
+  QObject::connect(&job, &LogImportJob::finished, [&](const LogImportOutcome&) { delivered = true; });
+  job.start(data("mission/part_a.csv"));
+  job.waitForFinished();  // the worker is done; its finished event is not yet handled
+  EXPECT_TRUE(job.running());
+  QElapsedTimer clock;
+  clock.start();
+  while (job.running() && clock.elapsed() < 20000) QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+  EXPECT_FALSE(job.running());
+  EXPECT_TRUE(delivered);
+}
+
 }  // namespace
 }  // namespace auv::ui

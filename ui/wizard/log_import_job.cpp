@@ -27,6 +27,7 @@ LogImportJob::LogImportJob(QObject* parent) : QObject(parent) {
   poll_timer_.setInterval(30);
   connect(&poll_timer_, &QTimer::timeout, this, [this] { poll(); });
   connect(&watcher_, &QFutureWatcher<LogImportOutcome>::finished, this, [this] {
+    busy_ = false;
     poll_timer_.stop();
     poll();
     emit finished(watcher_.result());
@@ -38,7 +39,7 @@ LogImportJob::~LogImportJob() {
   waitForFinished();
 }
 
-bool LogImportJob::running() const { return watcher_.isRunning(); }
+bool LogImportJob::running() const { return busy_; }
 
 void LogImportJob::cancel() {
   if (cancel_) cancel_->store(true);
@@ -68,6 +69,7 @@ void LogImportJob::start(const QString& path, std::optional<ColumnMapping> mappi
   const std::size_t block = block_bytes_;
   auto cancel = cancel_;
   auto permille = permille_;
+  busy_ = true;
   watcher_.setFuture(QtConcurrent::run(workerPool(), [file, mission, block, cancel, permille, mapping = std::move(mapping)]() {
     lowerWorkerPriority();
     LogImportOutcome out;

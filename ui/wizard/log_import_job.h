@@ -60,6 +60,7 @@ class LogImportJob : public QObject {
  private:
   void poll();
   QFutureWatcher<LogImportOutcome> watcher_;
+  bool busy_ = false;  // from start() until `finished` is emitted (ModelCheckJob::busy_)
   QTimer poll_timer_;
   std::shared_ptr<std::atomic<bool>> cancel_;
   std::shared_ptr<std::atomic<int>> permille_;

@@ -8,12 +8,15 @@
 namespace auv::ui {
 
 ModelCheckJob::ModelCheckJob(QObject* parent) : QObject(parent) {
-  connect(&watcher_, &QFutureWatcher<ModelCheckOutcome>::finished, this, [this] { emit finished(watcher_.result()); });
+  connect(&watcher_, &QFutureWatcher<ModelCheckOutcome>::finished, this, [this] {
+    busy_ = false;
+    emit finished(watcher_.result());
+  });
 }
 
 ModelCheckJob::~ModelCheckJob() { waitForFinished(); }
 
-bool ModelCheckJob::running() const { return watcher_.isRunning(); }
+bool ModelCheckJob::running() const { return busy_; }
 
 void ModelCheckJob::waitForFinished() { watcher_.waitForFinished(); }
 
@@ -21,6 +24,7 @@ void ModelCheckJob::start(std::shared_ptr<const MissionLog> log, VehicleProfile 
                           discrepancy::CheckSetup setup, discrepancy::ModelCheckOptions options,
                           std::optional<analysis::AnalysisReport> analysis) {
   if (running() || !log) return;
+  busy_ = true;
   watcher_.setFuture(QtConcurrent::run(workerPool(), [log, vehicle = std::move(vehicle), dir = std::move(resource_dir),
                                         base_setup = std::move(setup), options = std::move(options),
                                         analysis = std::move(analysis)]() {

@@ -48,6 +48,10 @@ class ModelCheckJob : public QObject {
 
  private:
   QFutureWatcher<ModelCheckOutcome> watcher_;
+  // From start() until `finished` has been emitted. The future stops running
+  // before its finished event reaches this thread; a caller that saw it
+  // stop could read the page before the outcome arrived.
+  bool busy_ = false;
 };
 
 }  // namespace auv::ui
