@@ -49,6 +49,14 @@ std::vector<HuginCase> huginCases() {
   return c;
 }
 
+// The candidate's fit on the log's noise twin, where one was flown.
+std::string twinText(const discrepancy::CandidateReport& k) {
+  if (!std::isfinite(k.twin_value)) return "";
+  char b[80];
+  std::snprintf(b, sizeof b, ", noise twin %.3g +- %.2g", k.twin_value, k.twin_sigma);
+  return b;
+}
+
 struct Tally {
   int logs = 0, top1 = 0, within30 = 0, named = 0, covered = 0, other = 0;
   int logs_with_other = 0;  // logs naming at least one term that is not the concealed effect
@@ -122,8 +130,8 @@ int main(int argc, char** argv) {
         std::printf("      analysis hull law:%s\n", law.c_str());
         for (const discrepancy::CandidateReport& k : r.candidates)
           if (k.id == c.expected || (c.expected.empty() && k.status.rfind("not ", 0) != 0))
-            std::printf("      %s alone %.3g +- %.2g (t %.1f, inclusion %.2f): %s\n", k.id.c_str(), k.value, k.sigma,
-                        k.t_value, k.inclusion_probability, k.status.c_str());
+            std::printf("      %s alone %.3g +- %.2g (t %.1f, inclusion %.2f%s): %s\n", k.id.c_str(), k.value, k.sigma,
+                        k.t_value, k.inclusion_probability, twinText(k).c_str(), k.status.c_str());
       }
     };
     for (int k = 0; k < n; ++k) {

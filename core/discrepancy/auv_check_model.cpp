@@ -12,6 +12,7 @@
 #include "discrepancy/check_messages.h"
 #include "discrepancy/log_features.h"
 #include "discrepancy/savitzky_golay.h"
+#include "discrepancy/sensor_noise_estimate.h"
 #include "seawater/seawater.h"
 #include "sim/actuator_forces.h"
 #include "sim/dynamics.h"
@@ -33,7 +34,7 @@ void require(const MissionLog& log, const char* name, const char* why) {
 
 AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, const sim::VehicleModel& model,
                              const sim::DepthAutopilotConfig& autopilot, const AuvCheckOptions& o)
-    : model_(model), autopilot_(autopilot), opt_(o) {
+    : profile_(v), model_(model), autopilot_(autopilot), opt_(o) {
   require(log, "depth", "for the depth rate");
   require(log, "pitch", "for the attitude");
   require(log, "roll", "for the roll balance");
@@ -46,8 +47,9 @@ AuvCheckModel::AuvCheckModel(const MissionLog& log, const VehicleProfile& v, con
   log_.metadata = log.metadata;
   log_.time = log.time;
   for (const char* name : {"depth", "pitch", "roll", "heading", "speed", "prop_rpm", "elevator", "thruster_front_rpm",
-                           "thruster_aft_rpm", "depth_cmd", "pitch_cmd"})
+                           "thruster_aft_rpm", "depth_cmd", "pitch_cmd", "temperature", "salinity", "density", "pressure"})
     if (const LogChannel* c = log.find(name)) log_.channels.push_back(*c);
+  noise_ = estimateSensorNoise(log);
   baseline_ = acceptedTermsFromProfile(v.sections, v.file);
   for (const AuvCheckOptions::HeldTerm& h : o.held_terms)
     if (const auto k = findTerm(h.id))
@@ -370,7 +372,7 @@ void AuvCheckModel::equationError(const Params& prm, std::span<const std::uint32
   }
 }
 
-void AuvCheckModel::replayError(const Params& p, double restart_every_s, double settle_s, std::vector<double>& out) const {
+TermReplayOptions AuvCheckModel::replayOptions(const Params& p, double restart_every_s) const {
   TermReplayOptions o;
   o.drive = hasChannel(log_, "depth_cmd", 2)   ? sim::ReplayDrive::DepthCommands
             : hasChannel(log_, "pitch_cmd", 2) ? sim::ReplayDrive::PitchCommands
@@ -381,7 +383,12 @@ void AuvCheckModel::replayError(const Params& p, double restart_every_s, double 
   o.restart_every_s = restart_every_s;
   o.surface_depth_m = opt_.min_depth_m;  // the rows the equation error leaves out as surface rows
   o.surface_model = true;
-  const TermReplayTrace tr = termReplay(calibratedModel(p), autopilot_, water_, log_, simAdjustment(total(p)), table_.t, o);
+  return o;
+}
+
+void AuvCheckModel::replayError(const Params& p, double restart_every_s, double settle_s, std::vector<double>& out) const {
+  const TermReplayTrace tr = termReplay(calibratedModel(p), autopilot_, water_, log_, simAdjustment(total(p)), table_.t,
+                                        replayOptions(p, restart_every_s));
   const std::size_t N = rowGrid_.size();
   out.assign(5 * N, kNaN);
   // The replay settles after every (re)start: the log's start, a drop-out,

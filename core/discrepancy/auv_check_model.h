@@ -38,6 +38,7 @@
 
 #include "discrepancy/check_model.h"
 #include "discrepancy/term_replay.h"
+#include "sim/sensor_noise.h"
 #include "hydrostatics/mass_properties.h"
 #include "missionlog/mission_log.h"
 #include "sim/depth_autopilot.h"
@@ -128,6 +129,8 @@ class AuvCheckModel final : public CheckModel {
   double cgY(const Params& p) const override;
   Message description() const override;
   std::vector<std::string> notes() const override { return notes_; }
+  std::unique_ptr<CheckModel> noiseTwin(const Params& p, std::uint64_t seed) const override;  // auv_check_twin.cpp
+  const sim::SensorNoise& sensorNoise() const { return noise_; }  // estimated from the log
 
   const TermValues& baseline() const { return baseline_; }
   sim::VehicleLoading loading(const Params& p) const;
@@ -139,6 +142,7 @@ class AuvCheckModel final : public CheckModel {
  private:
   // Observed - replayed at the rows; restart_every_s > 0 replays in horizons.
   void replayError(const Params& p, double restart_every_s, double settle_s, std::vector<double>& out) const;
+  TermReplayOptions replayOptions(const Params& p, double restart_every_s) const;
   // Smoothed states on the uniform grid (valid = every field finite).
   struct GridState {
     bool valid = false;
@@ -157,7 +161,9 @@ class AuvCheckModel final : public CheckModel {
   double profileNetMw() const;
   double netMwSigma() const;
 
-  MissionLog log_;  // the channels the replay needs (a copy: the model outlives the caller's log)
+  MissionLog log_;  // the channels the replay and the noise twin need (a copy: the model outlives the caller's log)
+  VehicleProfile profile_;
+  sim::SensorNoise noise_;
   sim::VehicleModel model_;
   sim::DepthAutopilotConfig autopilot_;
   sim::WaterColumn water_ = sim::WaterColumn::uniform(1025.0);

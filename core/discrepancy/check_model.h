@@ -8,6 +8,7 @@
 // model of core/sim (auv_check_model.h).
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -140,6 +141,13 @@ class CheckModel {
   virtual double cgY(const Params&) const { return std::numeric_limits<double>::quiet_NaN(); }
   virtual Message description() const = 0;
   virtual std::vector<std::string> notes() const { return {}; }
+
+  // A noise twin of the log: the same commands flown by the model with these
+  // parameters (no missing term), the log's own sensor noise on what the
+  // autopilot steers on and what is recorded, checked the same way. What the
+  // check fits there is what noise in the closed loop makes of a vehicle
+  // without the term (model_check.cpp). nullptr where the model has none.
+  virtual std::unique_ptr<CheckModel> noiseTwin(const Params& /*p*/, std::uint64_t /*seed*/) const { return nullptr; }
 };
 
 }  // namespace auv::discrepancy

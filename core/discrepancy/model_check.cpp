@@ -7,6 +7,7 @@
 #include "discrepancy/held_term_findings.h"
 #include "discrepancy/joint_refit.h"
 #include "discrepancy/linearised_problem.h"
+#include "discrepancy/noise_twin_test.h"
 #include "discrepancy/residual_statistics.h"
 #include "discrepancy/rms_and_localisation.h"
 #include "discrepancy/term_acceptance.h"
@@ -75,10 +76,12 @@ ModelCheckResult runModelCheck(const CheckModel& m, const ModelCheckOptions& o) 
 
   // --- 3. identifiability, selection, ensembling -----------------------------
   const TermSelection ts = selectTerms(s, lp, cand, o, R);
+  if (o.selection_only) return R;
 
   // --- 4. held-out simulation check ------------------------------------------
   const HeldOutScorer scorer(s, fitRows, base.params, R.warnings);
   TermAcceptance acc = acceptTerms(s, fitRows, scorer, ts, cand, base.params, o, R);
+  if (o.noise_twin && !acc.found.empty()) testAgainstNoiseTwin(m, base.params, o, acc, R);
 
   // --- 5. final joint fit ------------------------------------------------------
   const Fit fin = jointRefit(s, fitRows, acc.accepted, base.params, acc.found, R);

@@ -20,6 +20,7 @@
 //      before/after per channel on fitted and held-out data, and where each
 //      residual and each accepted term concentrates (localisation.h).
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,13 @@ struct ModelCheckOptions {
   // groups, each within its sigma) could put into it: |increment| at least
   // this many hypot(formal sigma, calibration_sigma).
   double min_calibration_z = 2.0;
+  // And from what the same check fits on the log's noise twin (noise_twin_test.h):
+  // |log value - twin value| at least this many hypot(their sigmas).
+  bool noise_twin = true;
+  double min_twin_z = 2.0;
+  // Stop after the selection (step 3): the candidates' fits and statistics
+  // only, no held-out test (what the noise twin needs).
+  bool selection_only = false;
   double collinear_threshold = 0.95;  // reported as "cannot be told apart"
   double degenerate_r2 = 0.995;       // share of a regressor the ballast state explains beyond which the term is not tried
   double stlsq_threshold = 0.5;  // in units of each term's typical value (comparison only)
@@ -106,6 +114,9 @@ struct CandidateReport {
   double t_value = 0.0;
   double inclusion_probability = 0.0;
   double nuisance_r2 = 0.0;  // share of its regressor the ballast state explains
+  // The same fit on the log's noise twin (noise_twin_test.h), where one was
+  // flown: the value noise in the closed loop gives a vehicle without it.
+  double twin_value = std::numeric_limits<double>::quiet_NaN(), twin_sigma = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A calibration constant as fitted with the ballast state (check_model.h).

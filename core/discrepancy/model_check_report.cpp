@@ -108,7 +108,7 @@ nlohmann::json toJson(const ModelCheckResult& r) {
   }
   mc["ballast_state"] = ballast;
   nlohmann::json cands = nlohmann::json::array();
-  for (const CandidateReport& c : r.candidates)
+  for (const CandidateReport& c : r.candidates) {
     cands.push_back({{"id", c.id},
                      {"status", c.status},
                      {"value_alone", num(c.value)},
@@ -116,6 +116,11 @@ nlohmann::json toJson(const ModelCheckResult& r) {
                      {"t_value", num(c.t_value)},
                      {"inclusion_probability", num(c.inclusion_probability)},
                      {"ballast_state_r2", num(c.nuisance_r2)}});
+    if (std::isfinite(c.twin_value)) {
+      cands.back()["noise_twin_value_alone"] = num(c.twin_value);
+      cands.back()["noise_twin_sigma_alone"] = num(c.twin_sigma);
+    }
+  }
   mc["candidates"] = cands;
   nlohmann::json ident = nlohmann::json::array();
   for (const IdentifiabilityIssue& i : r.identifiability)

@@ -56,7 +56,8 @@ namespace {
 
 TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAutopilotConfig& apcfg,
                               const sim::WaterColumn& water, const MissionLog& log, const SimAdjustment& a,
-                              std::span<const double> times, const TermReplayOptions& opt, bool restart) {
+                              std::span<const double> times, const TermReplayOptions& opt, bool restart,
+                              std::uint64_t span_index) {
   const sim::VehicleModel model = adjustedModel(base, a);
   const sim::ReplayDrive drive = sim::resolveReplayDrive(model, log, opt.drive);
   const double dt = opt.dt_s;
@@ -95,11 +96,12 @@ TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAut
   const double dW_per_s = units::g0 * a.mass_drift_kg_per_h / 3600.0;
   if (opt.preload_hover_integrator) ap.preloadHoverIntegrator(eng.buoyancyN() - (W0 + dW_per_s * (t0 - opt.mass_reference_time_s)));
   sim::ActuatorDemand demand;
-  sim::GaussianSource no_noise(0);
-  const sim::SensorNoise exact;
+  sim::GaussianSource noise(opt.noise_seed * 0x9E3779B97F4A7C15ULL + span_index);
 
   TermReplayTrace tr;
-  for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps}) v->assign(times.size(), kNaN);
+  for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps, &tr.elevator_deg,
+                  &tr.pressure_dbar})
+    v->assign(times.size(), kNaN);
   tr.since_start_s.resize(times.size());
   for (std::size_t i = 0; i < times.size(); ++i) tr.since_start_s[i] = times[i] - t0;
   std::size_t next = 0;
@@ -117,7 +119,7 @@ TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAut
       }
     }
     // What the sensors say: the autopilot steers on them, the log records them.
-    sim::Measurement meas = eng.measure(no_noise, exact);
+    sim::Measurement meas = eng.measure(noise, opt.noise);
     meas.depth_m += a.depth_offset_m;
     meas.pitch_rad += a.pitch_bias_rad;
     meas.depth_rate_mps -= a.vertical_current_mps;
@@ -132,9 +134,11 @@ TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAut
     while (next < times.size() && stepOf[next] == k) {
       tr.depth_m[next] = meas.depth_m;
       tr.pitch_rad[next] = meas.pitch_rad;
-      tr.roll_rad[next] = eng.state()[sim::kPhi] + a.roll_bias_rad;
+      tr.roll_rad[next] = eng.state()[sim::kPhi] + a.roll_bias_rad + noise.next(opt.noise.roll_rad);
       tr.speed_mps[next] = meas.speed_mps;
       tr.vertical_velocity_mps[next] = -meas.depth_rate_mps;
+      tr.elevator_deg[next] = -units::radToDeg(eng.actuators().plane_rad);  // paper sign -> log sign
+      tr.pressure_dbar[next] = eng.water().pressure_dbar + noise.next(opt.noise.pressure_dbar);
       ++next;
     }
     if (k == n_steps) break;
@@ -214,11 +218,13 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
     spans.push_back({r0, r1});
     r0 = r1;
   }
-  if (spans.size() == 1 && spans.front().first == 0 && spans.front().second == T.size()) return replayOneSpan(base, apcfg, water, log, a, times, opt, false);
+  if (spans.size() == 1 && spans.front().first == 0 && spans.front().second == T.size()) return replayOneSpan(base, apcfg, water, log, a, times, opt, false, 0);
 
   TermReplayTrace tr;
-  for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps, &tr.since_start_s})
+  for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps, &tr.elevator_deg,
+                  &tr.pressure_dbar, &tr.since_start_s})
     v->assign(times.size(), kNaN);
+  std::uint64_t span_index = 0;
   for (const auto& [r0, r1] : spans) {
     if (r1 - r0 < 2) continue;  // a lone row between gaps: nothing to fly
     std::vector<double> sub;
@@ -230,13 +236,15 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
       }
     }
     if (sub.empty()) continue;
-    const TermReplayTrace part = replayOneSpan(base, apcfg, water, sliceRows(log, r0, r1), a, sub, opt, r0 > 0);
+    const TermReplayTrace part = replayOneSpan(base, apcfg, water, sliceRows(log, r0, r1), a, sub, opt, r0 > 0, ++span_index);
     for (std::size_t j = 0; j < at.size(); ++j) {
       tr.depth_m[at[j]] = part.depth_m[j];
       tr.pitch_rad[at[j]] = part.pitch_rad[j];
       tr.roll_rad[at[j]] = part.roll_rad[j];
       tr.speed_mps[at[j]] = part.speed_mps[j];
       tr.vertical_velocity_mps[at[j]] = part.vertical_velocity_mps[j];
+      tr.elevator_deg[at[j]] = part.elevator_deg[j];
+      tr.pressure_dbar[at[j]] = part.pressure_dbar[j];
       tr.since_start_s[at[j]] = part.since_start_s[j];
     }
   }

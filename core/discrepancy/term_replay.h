@@ -9,6 +9,7 @@
 // StepEngine, grid, drives and autopilot); with no hooks active it gives the
 // same trace, which a test checks (docs/decisions/model-check-replay.md).
 #include <limits>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "sim/depth_autopilot.h"
 #include "sim/flown_mass.h"
 #include "sim/replay.h"
+#include "sim/sensor_noise.h"
 #include "sim/vehicle_model.h"
 #include "sim/water_column.h"
 
@@ -49,11 +51,17 @@ struct TermReplayOptions {
   // The emerged hull loses its buoyancy (sim::SimOptions::surface_model): a
   // replay that breaks the surface floats there, as the vehicle did.
   bool surface_model = false;
+  // Sensor noise the replayed autopilot steers on and the trace records
+  // (a noise twin of the log: model_check.h); zero = exact readings. Each
+  // span draws from its own stream of `noise_seed`.
+  sim::SensorNoise noise;
+  std::uint64_t noise_seed = 0;
 };
 
 // Simulated sensor readings at `times` (ascending, within the log).
 struct TermReplayTrace {
   std::vector<double> depth_m, pitch_rad, roll_rad, speed_mps, vertical_velocity_mps;  // vv up positive, over ground
+  std::vector<double> elevator_deg, pressure_dbar;  // the plane as logged (log sign), the CTD's pressure
   std::vector<double> since_start_s;  // time since the replay (re)started from the log; NaN where not flown
 };
 
