@@ -268,7 +268,7 @@ Eigen::VectorXd AuvCheckModel::nuisanceUpper() const {
 
 std::vector<NuisancePrior> AuvCheckModel::priors() const {
   std::vector<NuisancePrior> p;
-  if (opt_.cg_y_sigma_m) p.push_back({2, 0.0, *opt_.cg_y_sigma_m, true});
+  if (opt_.cg_y_sigma_m) p.push_back({2, opt_.cg_y_prior_shift_m, *opt_.cg_y_sigma_m, true});
   // Calibration constants: propeller torque 0 +- the profile's (it may be
   // anything from none to twice the assumed), the rest at the profile's.
   for (const CalibrationConstant& c : calibrationConstants()) {

@@ -51,6 +51,7 @@ namespace auv::discrepancy {
 struct AuvCheckOptions {
   std::vector<double> installed_kg;        // adjustment weight per profile point during the mission; empty = none
   std::optional<double> cg_y_sigma_m;      // CG y known from a roll test to this sigma (at the profile's CG y)
+  double cg_y_prior_shift_m = 0.0;         // ... plus this (a noise twin's roll test measured its own vehicle)
   double state_half_window_s = 1.0;     // local quartic fits of the states and actuators over +- this
   int state_fit_order = 4;
   double integral_half_window_s = 2.0;  // the equation error balances momentum over +- this

@@ -7,10 +7,14 @@
 // The AUV check's noise twin (check_model.h): the logged commands flown by
 // the calibrated vehicle without any missing term, through the profile's
 // autopilot steering on readings with the log's own noise, recorded where the
-// log has rows. Depth, pitch, roll, speed, elevator and the CTD pressure are
-// the twin's; the rest (propeller speed, commands, heading, the water) are the
-// log's. A row the log is missing stays missing, and rows the replay does not
-// fly (surface intervals, across drop-outs) keep the log's values.
+// log has rows. Depth, pitch, roll, speed, elevator, tunnel thrusters, the
+// CTD pressure and (flown on depth commands) the autopilot's pitch demand are
+// the twin's. The rest (propeller speed, depth commands, heading, the water)
+// are the log's. Every actuator must be the twin's: with the log's thrusters,
+// which held a vehicle growing heavier, the twins of the Delphin2 mass-drift
+// truths showed the log's drift (0.045-0.057 kg/h against 0.06). A row the
+// log is missing stays missing; rows the replay does not fly (surface
+// intervals, across drop-outs) keep the log's values.
 namespace auv::discrepancy {
 
 namespace {
@@ -37,7 +41,16 @@ std::unique_ptr<CheckModel> AuvCheckModel::noiseTwin(const Params& p, std::uint6
   replaceChannel(twin, "speed", tr.speed_mps, 1.0);
   replaceChannel(twin, "elevator", tr.elevator_deg, 1.0);
   replaceChannel(twin, "pressure", tr.pressure_dbar, 1.0);
-  return std::make_unique<AuvCheckModel>(twin, profile_, model_, autopilot_, opt_);
+  replaceChannel(twin, "thruster_front_rpm", tr.thruster_front_rpm, 1.0);
+  replaceChannel(twin, "thruster_aft_rpm", tr.thruster_aft_rpm, 1.0);
+  replaceChannel(twin, "pitch_cmd", tr.pitch_cmd_deg, 1.0);
+  // An independent measurement (the roll test's CG y) would have measured
+  // the twin's vehicle: its prior is centred there. Centred on the log's, a
+  // roll-sensor bias the base fit had put into CG y against that prior came
+  // back in the twin as the same bias.
+  AuvCheckOptions o2 = opt_;
+  o2.cg_y_prior_shift_m = p.nuisance[2];
+  return std::make_unique<AuvCheckModel>(twin, profile_, model_, autopilot_, o2);
 }
 
 }  // namespace auv::discrepancy

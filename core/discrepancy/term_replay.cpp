@@ -100,7 +100,7 @@ TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAut
 
   TermReplayTrace tr;
   for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps, &tr.elevator_deg,
-                  &tr.pressure_dbar})
+                  &tr.pressure_dbar, &tr.thruster_front_rpm, &tr.thruster_aft_rpm, &tr.pitch_cmd_deg})
     v->assign(times.size(), kNaN);
   tr.since_start_s.resize(times.size());
   for (std::size_t i = 0; i < times.size(); ++i) tr.since_start_s[i] = times[i] - t0;
@@ -139,6 +139,9 @@ TermReplayTrace replayOneSpan(const sim::VehicleModel& base, const sim::DepthAut
       tr.vertical_velocity_mps[next] = -meas.depth_rate_mps;
       tr.elevator_deg[next] = -units::radToDeg(eng.actuators().plane_rad);  // paper sign -> log sign
       tr.pressure_dbar[next] = eng.water().pressure_dbar + noise.next(opt.noise.pressure_dbar);
+      tr.thruster_front_rpm[next] = eng.actuators().thruster_rpm[0];
+      tr.thruster_aft_rpm[next] = eng.actuators().thruster_rpm[1];
+      if (drive == sim::ReplayDrive::DepthCommands) tr.pitch_cmd_deg[next] = units::radToDeg(ap.outputs().pitch_cmd_rad);
       ++next;
     }
     if (k == n_steps) break;
@@ -222,7 +225,7 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
 
   TermReplayTrace tr;
   for (auto* v : {&tr.depth_m, &tr.pitch_rad, &tr.roll_rad, &tr.speed_mps, &tr.vertical_velocity_mps, &tr.elevator_deg,
-                  &tr.pressure_dbar, &tr.since_start_s})
+                  &tr.pressure_dbar, &tr.thruster_front_rpm, &tr.thruster_aft_rpm, &tr.pitch_cmd_deg, &tr.since_start_s})
     v->assign(times.size(), kNaN);
   std::uint64_t span_index = 0;
   for (const auto& [r0, r1] : spans) {
@@ -245,6 +248,9 @@ TermReplayTrace termReplay(const sim::VehicleModel& base, const sim::DepthAutopi
       tr.vertical_velocity_mps[at[j]] = part.vertical_velocity_mps[j];
       tr.elevator_deg[at[j]] = part.elevator_deg[j];
       tr.pressure_dbar[at[j]] = part.pressure_dbar[j];
+      tr.thruster_front_rpm[at[j]] = part.thruster_front_rpm[j];
+      tr.thruster_aft_rpm[at[j]] = part.thruster_aft_rpm[j];
+      tr.pitch_cmd_deg[at[j]] = part.pitch_cmd_deg[j];
       tr.since_start_s[at[j]] = part.since_start_s[j];
     }
   }

@@ -62,6 +62,8 @@ struct TermReplayOptions {
 struct TermReplayTrace {
   std::vector<double> depth_m, pitch_rad, roll_rad, speed_mps, vertical_velocity_mps;  // vv up positive, over ground
   std::vector<double> elevator_deg, pressure_dbar;  // the plane as logged (log sign), the CTD's pressure
+  std::vector<double> thruster_front_rpm, thruster_aft_rpm;  // tunnel thrusters (0 without)
+  std::vector<double> pitch_cmd_deg;  // the replayed autopilot's pitch demand (depth-command drive only, else NaN)
   std::vector<double> since_start_s;  // time since the replay (re)started from the log; NaN where not flown
 };
 
