@@ -128,6 +128,11 @@ int main(int argc, char** argv) {
           if (q.id == "hull_compressibility" || q.id == "thermal_expansion")
             law += " " + q.id + "=" + std::to_string(q.value) + "+-" + std::to_string(q.sigma);
         std::printf("      analysis hull law:%s\n", law.c_str());
+        if (rep.calibration.empty()) {
+          std::string why;
+          for (const Message& w : rep.warnings) why += " [" + w.text() + "]";
+          std::printf("      the analysis calibrated nothing:%s\n", why.c_str());
+        }
         for (const discrepancy::CandidateReport& k : r.candidates)
           if (k.id == c.expected || (c.expected.empty() && k.status.rfind("not ", 0) != 0))
             std::printf("      %s alone %.3g +- %.2g (t %.1f, inclusion %.2f%s): %s\n", k.id.c_str(), k.value, k.sigma,

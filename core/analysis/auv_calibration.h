@@ -139,6 +139,10 @@ struct SteadyCalibration {
   double buoyancy_law_chi2 = 0.0;
   double buoyancy_law_chi2_with_pitch_bias = 0.0;  // the same with a pitch sensor bias free beside them
   bool buoyancy_law_fitted = false;
+  // Fitted: the one law (0 compressibility, 1 thermal expansion, 2 mass
+  // drift) that alone explains the legs about as well as the three; the
+  // others are held at the profile's. -1: the three, or none.
+  int single_buoyancy_law = -1;
 };
 
 // Nominal linear pitch-moment derivative m_uw at density rho for a Munk factor.
