@@ -130,10 +130,12 @@ nlohmann::json toJson(const AnalysisReport& r) {
   j["warnings"] = r.warnings;
   j["notes"] = r.notes;
   nlohmann::json cal = nlohmann::json::array();
-  for (const CalibrationParameter& q : r.calibration)
+  for (const CalibrationParameter& q : r.calibration) {
     cal.push_back({{"id", q.id}, {"value", sig6(q.value)}, {"unit", q.unit}, {"sigma", sig6(q.sigma)},
                    {"profile_value", sig6(q.profile_value)}, {"prior_sigma", sig6(q.prior_sigma)},
                    {"identified", q.identified}, {"used", q.used}});
+    if (!q.rival.empty()) cal.back()["rival"] = q.rival;
+  }
   j["calibration"] = cal;
   j["details"] = r.details;
   return j;

@@ -2,7 +2,11 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <tuple>
+#include <utility>
 
 #include "analysis/steady_solution.h"
 #include "common/units.h"
@@ -296,29 +300,31 @@ double lawChi2WithPitchBias(const SteadyHydroCoefficients& c, double W, double r
 
 // The buoyancy law that alone explains the legs about as well as the three
 // free (the rise of the whole objective, data and priors, over the data's
-// scatter scale, below 5.99: chi2 with 2 dof at 95 %), the best such; -1
-// when none does.
-int explainingLaw(const SteadyHydroCoefficients& c, double W, double rho_ref, const std::vector<CalibrationSegment>& segs,
-                  const Priors& pr, const Solved& free, double chi2_per_dof) {
+// scatter scale, below 5.99: chi2 with 2 dof at 95 %), the best such, and a
+// rival: another such law whose rise is within 2 of the best's. -1: none.
+std::pair<int, int> explainingLaw(const SteadyHydroCoefficients& c, double W, double rho_ref,
+                                  const std::vector<CalibrationSegment>& segs, const Priors& pr, const Solved& free,
+                                  double chi2_per_dof) {
   constexpr int nLaw = kCalibrationCount - kCompressibility;
-  constexpr double kTwoDof95 = 5.99;
+  constexpr double kTwoDof95 = 5.99, kRivalRise = 2.0;
   const double scale = std::max(1.0, chi2_per_dof);
   const double full = (free.At * free.p - free.bt).squaredNorm();
-  int best = -1;
-  double bestRise = kTwoDof95;
+  std::array<double, nLaw> rise;
+  rise.fill(std::numeric_limits<double>::infinity());
   for (int i = 0; i < nLaw; ++i) {
     Priors one = pr;
     for (int j = 0; j < nLaw; ++j)
       if (j != i) one.sigma(kCompressibility + j) *= 1e-6;
     const Solved si = solve(c, W, rho_ref, segs, one, one.mean);
-    if (!si.ok) continue;
-    const double rise = ((si.At * si.p - si.bt).squaredNorm() - full) / scale;
-    if (rise < bestRise) {
-      bestRise = rise;
-      best = i;
-    }
+    if (si.ok) rise[static_cast<std::size_t>(i)] = ((si.At * si.p - si.bt).squaredNorm() - full) / scale;
   }
-  return best;
+  const auto at = [&](int i) { return rise[static_cast<std::size_t>(i)]; };
+  int best = -1, rival = -1;
+  for (int i = 0; i < nLaw; ++i)
+    if (at(i) < kTwoDof95 && (best < 0 || at(i) < at(best))) best = i;
+  for (int i = 0; best >= 0 && i < nLaw; ++i)
+    if (i != best && at(i) < kTwoDof95 && at(i) - at(best) < kRivalRise && (rival < 0 || at(i) < at(rival))) rival = i;
+  return {best, rival};
 }
 
 }  // namespace
@@ -398,7 +404,8 @@ SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, do
   // neither named). The law that alone fits best is kept when the three do
   // not fit significantly better (chi2, 2 dof, 95 %), the others held at
   // the profile's (docs/decisions/analysis-buoyancy-law-choice.md).
-  if (out.buoyancy_law_fitted) out.single_buoyancy_law = explainingLaw(c, W, rho_ref, segs, pr, s, out.chi2_per_dof);
+  if (out.buoyancy_law_fitted)
+    std::tie(out.single_buoyancy_law, out.rival_buoyancy_law) = explainingLaw(c, W, rho_ref, segs, pr, s, out.chi2_per_dof);
   if (out.single_buoyancy_law >= 0)
     for (int j = 0; j < nLaw; ++j)
       if (j != out.single_buoyancy_law) pr.sigma(kCompressibility + j) *= 1e-6;
@@ -459,6 +466,7 @@ SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, do
     if (out.single_buoyancy_law == i) {  // the one law, as the estimate has it
       q.value = profile[i] + out.p(kCompressibility + i);
       q.sigma = std::sqrt(std::max(0.0, out.cov(kCompressibility + i, kCompressibility + i)));
+      if (out.rival_buoyancy_law >= 0) q.rival = ids[out.rival_buoyancy_law];
     }
     q.identified = q.sigma < 0.5 * q.prior_sigma;
     out.parameters.push_back(q);

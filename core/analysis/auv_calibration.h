@@ -143,6 +143,10 @@ struct SteadyCalibration {
   // drift) that alone explains the legs about as well as the three; the
   // others are held at the profile's. -1: the three, or none.
   int single_buoyancy_law = -1;
+  // Another law that alone explains the legs within 2 of the chosen one's
+  // chi-square rise (a likelihood ratio above 0.37): the log cannot tell
+  // them apart, and the chosen law's parameter names it (`rival`). -1: none.
+  int rival_buoyancy_law = -1;
 };
 
 // Nominal linear pitch-moment derivative m_uw at density rho for a Munk factor.

@@ -15,6 +15,9 @@ struct CalibrationParameter {
   // false: reported for what the log says, but the estimate held the
   // profile's value (the hull law when its change was not significant).
   bool used = true;
+  // A buoyancy law chosen alone: the other law the legs explain about as
+  // well (auv_calibration.cpp, explainingLaw), empty when none.
+  std::string rival;
 };
 
 // A hydrodynamic group of the steady balance that the log put more than

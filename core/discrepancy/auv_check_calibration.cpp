@@ -154,7 +154,7 @@ std::vector<HeldTermValue> AuvCheckModel::heldTerms() const {
     const auto k = findTerm(h.id);
     if (!k) continue;
     const PhysicsTerm& t = termLibrary()[*k];
-    out.push_back({h.id, std::string(t.unit), std::string(t.parameter), h.value, h.sigma, h.profile_value, h.prior_sigma});
+    out.push_back({h.id, std::string(t.unit), std::string(t.parameter), h.value, h.sigma, h.profile_value, h.prior_sigma, h.rival});
   }
   return out;
 }

@@ -91,6 +91,7 @@ struct AuvCheckOptions {
   struct HeldTerm {
     std::string id;
     double value = 0.0, sigma = 0.0, profile_value = 0.0, prior_sigma = 0.0;
+    std::string rival;  // the law the analysis could not tell it from, if any
   };
   std::vector<HeldTerm> held_terms;
 };

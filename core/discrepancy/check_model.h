@@ -83,6 +83,7 @@ struct CalibrationConstant {
 struct HeldTermValue {
   std::string id, unit, label;
   double value = 0.0, sigma = 0.0, profile_value = 0.0, prior_sigma = 0.0;  // display unit
+  std::string rival;  // a law the calibration's data explain about as well (analysis::CalibrationParameter::rival)
 };
 
 class CheckModel {

@@ -64,6 +64,11 @@ void reportHeldTermFindings(const FitSetup& s, const std::vector<std::uint32_t>&
     mp.t_value = std::abs(h.value - h.profile_value) / h.sigma;
     mp.evidence = "fitted by the analysis from the steady legs' means at their depths, waters and times, which "
                   "separate the hull's compressibility, its thermal expansion and a mass drift; the check holds it";
+    if (!h.rival.empty()) {
+      mp.confused_with.push_back(h.rival);
+      mp.evidence += "; but the legs explain a " + h.rival + " alone about as well (the temperature followed the depth): "
+                     "legs at one depth in different water, or at two depths at one temperature, would tell them apart";
+    }
     mp.where = locateContribution(s, before.params, fin.params, all);  // where it acts
     R.accepted[*k] = increment;  // for --accept (the check's model has it in its baseline)
     found.push_back(mp);

@@ -53,7 +53,7 @@ std::vector<AuvCheckOptions::HeldTerm> analysisHeldTerms(const analysis::Analysi
     if ((c.id == "hull_compressibility" || c.id == "thermal_expansion" || c.id == "mass_drift") && c.used &&
         std::isfinite(c.value) &&
         std::isfinite(c.sigma) && c.sigma > 0.0)
-      out.push_back({c.id, c.value, c.sigma, c.profile_value, c.prior_sigma});
+      out.push_back({c.id, c.value, c.sigma, c.profile_value, c.prior_sigma, c.rival});
   return out;
 }
 

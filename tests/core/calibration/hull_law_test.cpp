@@ -7,9 +7,11 @@
 // (bench/hugin_concealed_bench's cases), and without one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "analysis/analysis_report.h"
@@ -245,6 +247,39 @@ TEST(HullLaw, APitchSensorBiasIsNotTakenForAHullLaw) {
       EXPECT_NE(k.id, "hull_compressibility");
     }
   }, bias);
+}
+
+// A compressibility of 8e-6 on a survey whose temperature follows its depth
+// (truth 5202): a thermal expansion alone explains the legs as well (its
+// chi-square rise 0.5 against 2.3), so the analysis keeps that one law, and
+// says it cannot tell it from the compressibility, which the check then
+// lists beside its finding.
+TEST(HullLaw, ALawTheLegsCannotTellFromAnotherNamesItsRival) {
+  discrepancy::SyntheticAuvTruth kappa;
+  kappa.extra_compressibility_per_dbar = 8e-6;
+  checkFirstLogWithItsAnalysis(
+      5202,
+      [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double, const Harness&) {
+    const analysis::CalibrationParameter* used = nullptr;
+    for (const char* id : {"hull_compressibility", "thermal_expansion", "mass_drift"}) {
+      const analysis::CalibrationParameter* q = parameter(rep, id);
+      ASSERT_NE(q, nullptr);
+      if (q->used) {
+        EXPECT_EQ(used, nullptr) << "one law, not " << used->id << " and " << id;
+        used = q;
+      }
+    }
+    ASSERT_NE(used, nullptr);
+    const std::string other = used->id == "thermal_expansion" ? "hull_compressibility" : "thermal_expansion";
+    EXPECT_EQ(used->rival, other);
+    EXPECT_NE(analysis::toJson(rep)["calibration"].dump().find("\"rival\":\"" + other + "\""), std::string::npos);
+    bool listed = false;
+    for (const discrepancy::MissingPhysics& m : r.missing_physics)
+      if (m.id == used->id)
+        listed = std::find(m.confused_with.begin(), m.confused_with.end(), other) != m.confused_with.end() &&
+                 m.evidence.find(other + " alone") != std::string::npos;
+    EXPECT_TRUE(listed);
+  }, kappa);
 }
 
 }  // namespace
