@@ -125,9 +125,9 @@ int main(int argc, char** argv) {
         std::printf("      calibration:%s\n", cal.c_str());
         std::string law;
         for (const analysis::CalibrationParameter& q : rep.calibration)
-          if (q.id == "hull_compressibility" || q.id == "thermal_expansion")
-            law += " " + q.id + "=" + std::to_string(q.value) + "+-" + std::to_string(q.sigma);
-        std::printf("      analysis hull law:%s\n", law.c_str());
+          if (q.id == "hull_compressibility" || q.id == "thermal_expansion" || q.id == "mass_drift")
+            law += " " + q.id + (q.used ? "" : "(unused)") + "=" + std::to_string(q.value) + "+-" + std::to_string(q.sigma);
+        std::printf("      analysis buoyancy laws:%s\n", law.c_str());
         if (rep.calibration.empty()) {
           std::string why;
           for (const Message& w : rep.warnings) why += " [" + w.text() + "]";

@@ -40,11 +40,7 @@ int runAnalyze(const AnalyzeOpts& o) {
   if (!o.installed.empty())
     a.installed_kg = parseNumberList(o.installed, v.points.size(), "installed",
                                      "the kg of adjustment weight at each point during the mission, in profile order");
-  if (!o.bg_mm.empty()) {
-    const double bg = parseNumber(o.bg_mm, "bg-mm", "the CG-below-CB distance in mm from an inclining or roll test");
-    if (!(bg > 0.0)) throw InputError("bg-mm", "must be positive (CG below CB)", "give the measured distance in mm, e.g. --bg-mm 20");
-    a.bg_m = units::mmToM(bg);
-  }
+  if (!o.bg_mm.empty()) a.bg_m = parseBgMm(o.bg_mm);
   a.glider_target = o.target.request();
   if (!o.coefficient_sigma.empty()) {
     const double r = parseNumber(o.coefficient_sigma, "coefficient-sigma",

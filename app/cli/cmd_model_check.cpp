@@ -39,7 +39,7 @@ namespace {
 
 struct ModelCheckOpts {
   std::vector<std::string> log;
-  std::string cache_dir, vehicle, json, out_profile, installed, cg_y_sigma_mm, terms, min_depth, config, history;
+  std::string cache_dir, vehicle, json, out_profile, installed, bg_mm, cg_y_sigma_mm, terms, min_depth, config, history;
   bool accept = false;
   TargetFlags target;
 };
@@ -59,6 +59,7 @@ int runModelCheck(const ModelCheckOpts& o) {
                                      "the kg of adjustment weight at each point during the mission, in profile order");
     setup.auv.installed_kg = a.installed_kg;
   }
+  if (!o.bg_mm.empty()) a.bg_m = parseBgMm(o.bg_mm);  // the check holds the analysis's BG
   if (!o.cg_y_sigma_mm.empty()) {
     const double s = parseNumber(o.cg_y_sigma_mm, "cg-y-sigma-mm", "the CG y uncertainty of a roll test, in mm");
     if (!(s > 0.0)) throw InputError("cg-y-sigma-mm", "must be positive", "e.g. --cg-y-sigma-mm 0.2");
@@ -215,6 +216,9 @@ Command addModelCheckCommand(CLI::App& app) {
   cmd->add_option("--out-profile", o->out_profile, "Where --accept writes the profile copy (default <id>.model-check.json)");
   cmd->add_option("--installed", o->installed,
                   "AUV: adjustment mass at each point during the logged mission, kg, profile order");
+  cmd->add_option("--bg-mm", o->bg_mm,
+                  "AUV: CG below CB from an inclining/roll test, mm (as for 'analyze'): with BG known a pitch sensor "
+                  "bias can be told from the ballast state");
   cmd->add_option("--cg-y-sigma-mm", o->cg_y_sigma_mm,
                   "AUV: CG y is known from a roll test to this sigma (mm); lets a roll-sensor bias be told from CG y");
   cmd->add_option("--terms", o->terms, "Only try these library terms (comma-separated ids)");

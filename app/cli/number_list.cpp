@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/input_error.h"
+#include "common/units.h"
 
 namespace auv::cli {
 
@@ -36,6 +37,12 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t expecte
                      "give " + what);
   }
   return out;
+}
+
+double parseBgMm(const std::string& text) {
+  const double bg = parseNumber(text, "bg-mm", "the CG-below-CB distance in mm from an inclining or roll test");
+  if (!(bg > 0.0)) throw InputError("bg-mm", "must be positive (CG below CB)", "give the measured distance in mm, e.g. --bg-mm 20");
+  return units::mmToM(bg);
 }
 
 }  // namespace auv::cli

@@ -9,5 +9,7 @@ namespace auv::cli {
 std::vector<double> parseNumberList(const std::string& text, std::size_t expected, const std::string& field,
                                     const std::string& what);
 double parseNumber(const std::string& text, const std::string& field, const std::string& what);
+// --bg-mm: the CG-below-CB distance of an inclining or roll test, mm -> m.
+double parseBgMm(const std::string& text);
 
 }  // namespace auv::cli

@@ -33,6 +33,10 @@ inline constexpr MessageFormat kPorpoising{
     "%1 constant-command leg(s), %2 min in all, were flown porpoising (pitch standard deviation up to %3 deg, period "
     "about %4 s) and hold no steady flight: the depth autopilot limit-cycles on this vehicle, and the estimate rests on "
     "the rest of the log. Retune the depth loop (lower gains) or raise BG; moving weights along the hull will not stop it"};
+inline constexpr MessageFormat kAttitudeBiasRemoved{
+    "analysis.attitude_bias_removed",
+    "the logged pitch and roll were corrected by the attitude sensor biases the profile holds (accepted from a model "
+    "check): pitch %1 +- %2 deg, roll %3 +- %4 deg (reading minus true); their sigmas are in the ballast state's"};
 inline constexpr MessageFormat kPitchBasisGlide{"analysis.pitch_basis_glide",
                                                 "measured - commanded, during glides whose command has the phase's sign"};
 inline constexpr MessageFormat kPitchBasisLevel{"analysis.pitch_basis_level", "measured - commanded, in steady level flight"};

@@ -118,7 +118,7 @@ nlohmann::json numOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v)
 
 }  // namespace
 
-AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, const AnalysisOptions& o) {
+AnalysisReport detail::analyzeRecordedLog(const MissionLog& log, const VehicleProfile& v, const AnalysisOptions& o) {
   AnalysisReport rep;
   rep.vehicle_id = v.id;
   rep.vehicle_kind = v.kind;

@@ -63,7 +63,15 @@ struct AnalysisOptions {
 
 // Throws InputError when the log has no usable depth/pressure or `installed_kg`
 // does not match the profile's points.
+// Attitude sensor biases the profile holds (accepted from a model check) are
+// taken out of the log first, their sigmas carried into the ballast state's
+// (analysis/attitude_sensor_bias.h).
 AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& vehicle, const AnalysisOptions& options = {});
+
+namespace detail {
+// The analysis of the log's channels as recorded (analyzeMission's core).
+AnalysisReport analyzeRecordedLog(const MissionLog& log, const VehicleProfile& vehicle, const AnalysisOptions& options);
+}  // namespace detail
 
 // gliderConstantsFromProfile and latitudeFromMetadata: analysis/profile_constants.h.
 

@@ -24,7 +24,7 @@
         <translation>%1 etappe(r) der fartøyet svingte sakte opp og ned ble midlet over hele svingninger.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="134"/>
         <source>The analysed log was not flown as commanded (see its warnings), so this move rests on a net buoyancy uncertainty of ±%2 kg: after the move, make a short test dive at the survey&apos;s speeds before the survey.</source>
         <translation>Den analyserte loggen ble ikke fløyet som beordret (se advarslene), så denne flyttingen hviler på en usikkerhet i netto oppdrift på ±%2 kg: etter flyttingen, ta et kort prøvedykk ved kartleggingens hastigheter før kartleggingen.</translation>
     </message>
@@ -34,701 +34,706 @@
         <translation>I %1 min holdt fartøyet seg omtrent %2 m over beordret dybde med høyderoret i anslag (%3°): det er for lett eller for akterlastet for rorene ved denne farten, så denne loggen sier lite om ballasten. Legg til vekt forut i et lite steg og ta et kort prøvedykk før en kartlegging.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="28"/>
         <source>For %1 min the vehicle stayed about %2 m below its commanded depth with the elevator at its stop (%3°): it is too heavy or too nose-heavy for its planes at this speed, so this log says little about its ballast. Remove weight at the front in a small step and make a short test dive before a survey.</source>
         <translation>I %1 min holdt fartøyet seg omtrent %2 m under beordret dybde med høyderoret i anslag (%3°): det er for tungt eller for forlastet for rorene ved denne farten, så denne loggen sier lite om ballasten. Fjern vekt forut i et lite steg og ta et kort prøvedykk før en kartlegging.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="29"/>
         <source>In %1 leg(s), %2 min in all, the vehicle porpoised (pitch swinging by up to %3° every %4 s or so) and never flew steadily: the depth autopilot overreacts on this vehicle, so the estimate comes from the rest of the log. Lower the depth autopilot&apos;s gains or lower the centre of gravity; moving weights forward or aft will not stop it.</source>
         <translation>I %1 etappe(r), %2 min i alt, gikk fartøyet i bølgebevegelse (stamp som svinger med opptil %3° omtrent hvert %4 s) og fløy aldri stødig: dybdeautopiloten overreagerer på dette fartøyet, så estimatet kommer fra resten av loggen. Senk dybdeautopilotens forsterkning eller senk tyngdepunktet; å flytte vekter forover eller akterover vil ikke stoppe det.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="27"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="30"/>
+        <source>The logged pitch and roll were corrected by the attitude sensor errors an earlier model check found and you accepted: pitch %1 ± %2°, roll %3 ± %4° (reading minus true). Their uncertainty is included in the net buoyancy and CG uncertainty.</source>
+        <translation>Loggført stamp og rull ble korrigert for feilene i attitydesensoren som en tidligere modellsjekk fant og du godtok: stamp %1 ± %2°, rull %3 ± %4° (avlest minus sann). Usikkerheten deres er tatt med i usikkerheten for netto oppdrift og tyngdepunkt.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="31"/>
         <source>measured minus commanded, during glides whose command has the phase&apos;s sign</source>
         <translation>målt minus beordret, i glid der ordren har fasens fortegn</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="28"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="32"/>
         <source>measured minus commanded, in steady level flight</source>
         <translation>målt minus beordret, i stødig planflyging</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="29"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="33"/>
         <source>pitch at steady depth (the log has no commanded pitch; level flight should be at 0°)</source>
         <translation>stamp på stødig dybde (loggen har ingen beordret stamp; planflyging skal være på 0°)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="30"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="34"/>
         <source>The log has no commanded depth: the depth error is not available.</source>
         <translation>Loggen har ingen beordret dybde: dybdeavviket er ikke tilgjengelig.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="31"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="35"/>
         <source>%1 CTD samples outside the EOS-80 range were not used for the density.</source>
         <translation>%1 CTD-målinger utenfor gyldighetsområdet til EOS-80 ble ikke brukt til tettheten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="32"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="36"/>
         <source>No in-situ density could be computed (no temperature and salinity or density in the log): %1 kg/m³ assumed.</source>
         <translation>Kunne ikke beregne tetthet in situ (loggen har verken temperatur og saltholdighet eller tetthet): %1 kg/m³ er antatt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="33"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="37"/>
         <source>Not identifiable from this log: a glider&apos;s pitch is set by its battery position, not by a fixed CG (use the tank or pitch-trim procedure).</source>
         <translation>Kan ikke bestemmes fra denne loggen: en glider sin stamp settes av batteriposisjonen, ikke av et fast tyngdepunkt (bruk tank- eller stamptrimprosedyren).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="34"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="38"/>
         <source>Not identifiable from this log: the glider&apos;s roll is set by its roll mass (use the tank procedure).</source>
         <translation>Kan ikke bestemmes fra denne loggen: gliderens rull settes av rullevekten (bruk tankprosedyren).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="35"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="39"/>
         <source>Not identifiable from this log: it has no pump volume (the buoyancy engine&apos;s volume).</source>
         <translation>Kan ikke bestemmes fra denne loggen: den har ikke pumpevolum (oppdriftsmotorens volum).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="36"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="40"/>
         <source>Not identifiable from this log: it has no pitch.</source>
         <translation>Kan ikke bestemmes fra denne loggen: den har ikke stamp.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="37"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="41"/>
         <source>Not identifiable from this log: no steady dive or climb was found.</source>
         <translation>Kan ikke bestemmes fra denne loggen: fant ingen stødig dykk eller stigning.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="38"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="42"/>
         <source>Not identifiable from this log: fewer than 10 steady-glide samples deeper than %1 m with a pitch of at least %2°.</source>
         <translation>Kan ikke bestemmes fra denne loggen: færre enn 10 målinger i stødig glid dypere enn %1 m med stamp på minst %2°.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="39"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="43"/>
         <source>The log gives the mass as %1 kg but the vehicle profile has %2 kg: the fit uses the profile&apos;s mass (it matters only through density changes).</source>
         <translation>Loggen oppgir massen som %1 kg, men fartøyprofilen har %2 kg: tilpasningen bruker profilens masse (den betyr bare noe gjennom tetthetsendringer).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="40"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="44"/>
         <source>The glider flight-model fit did not converge: %1</source>
         <translation>Tilpasningen av gliderens flymodell konvergerte ikke: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="41"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="45"/>
         <source>The glider flight-model constants are the Slocum defaults (wing area 0.1 m², lift slope 7.53 per rad, induced drag 10.5 per rad²): give this glider&apos;s flight model in its vehicle profile.</source>
         <translation>Konstantene i gliderens flymodell er standardverdiene for Slocum (vingeareal 0,1 m², løftestigning 7,53 per rad, indusert motstand 10,5 per rad²): legg inn denne gliderens flymodell i fartøyprofilen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="42"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="46"/>
         <source>The hull compressibility is not in the vehicle profile: 5e-6 per dbar is used.</source>
         <translation>Skrogets kompressibilitet står ikke i fartøyprofilen: 5e-6 per dbar brukes.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="43"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="47"/>
         <source>Not identifiable from this log: no steady segment has roll samples.</source>
         <translation>Kan ikke bestemmes fra denne loggen: ingen stødige segmenter har rullmålinger.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="44"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="48"/>
         <source>The log has no propeller speed: CG y assumes the roll at cruise is static; any propeller reaction torque is included in it.</source>
         <translation>Loggen har ikke propellturtall: tyngdepunkt y antar at rullen i marsjfart er statisk; et eventuelt reaksjonsmoment fra propellen er tatt med i den.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="45"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="49"/>
         <source>All steady segments run the propeller at about the same speed, so its reaction torque cannot be told from a CG offset: CG y is the offset that levels the vehicle at this cruise speed, not the static CG.</source>
         <translation>Alle stødige segmenter kjører propellen på omtrent samme turtall, så reaksjonsmomentet kan ikke skilles fra et forskjøvet tyngdepunkt: tyngdepunkt y er forskyvningen som holder fartøyet på rett kjøl i denne marsjfarten, ikke det statiske tyngdepunktet.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="46"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="50"/>
         <source>Not identifiable from this log: a steady roll gives y = BG tan(roll), and BG (the CG height below the CB) cannot be measured from the log. Enter BG from an inclining or roll test for this configuration (static roll %1°).</source>
         <translation>Kan ikke bestemmes fra denne loggen: en stødig rull gir y = BG tan(rull), og BG (tyngdepunktets høyde under oppdriftssenteret) kan ikke måles fra loggen. Legg inn BG fra en krengeprøve eller rulletest for denne konfigurasjonen (statisk rull %1°).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="47"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="51"/>
         <source>Not identifiable from this log: no steady level flight long enough was found.</source>
         <translation>Kan ikke bestemmes fra denne loggen: fant ingen stødig planflyging som var lang nok.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="48"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="52"/>
         <source>Not identifiable from this log: it has no speed (the lift and moment that balance the buoyancy grow with the speed squared).</source>
         <translation>Kan ikke bestemmes fra denne loggen: den har ikke fart (løftet og momentet som balanserer oppdriften vokser med kvadratet av farten).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="49"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="53"/>
         <source>Not identifiable from this log: no steady segment has both speed and pitch.</source>
         <translation>Kan ikke bestemmes fra denne loggen: ingen stødige segmenter har både fart og stamp.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="50"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="54"/>
         <source>Not identifiable from this log: it has no elevator (stern-plane) angle, so each steady segment only fixes a moment about the planes&apos; centre of pressure (%1 m from the CB). Record the elevator angle.</source>
         <translation>Kan ikke bestemmes fra denne loggen: den har ikke dybderorvinkel, så hvert stødige segment bestemmer bare et moment om rorenes trykksenter (%1 m fra oppdriftssenteret). Logg dybderorvinkelen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="51"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="55"/>
         <source>Calibrated with %1 steady segments of earlier missions of this configuration and the known weight changes since.</source>
         <translation>Kalibrert med %1 stødige segmenter fra tidligere oppdrag med denne konfigurasjonen og de kjente vektendringene siden.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="52"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="56"/>
         <source>%1 steady segment(s) left out: the tunnel thrusters ran there (up to %2 rpm), and the steady balance has no thruster term (the model check replays them).</source>
         <translation>%1 stødige segment(er) utelatt: tunnelthrusterne gikk der (opptil %2 o/min), og den stødige balansen har ikke noe thrusterledd (modellsjekken spiller dem av igjen).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="53"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="57"/>
         <source>Not identifiable from this log: the tunnel thrusters ran in all %1 steady segment(s) (up to %2 rpm) and carry an unknown part of the net buoyancy, which the steady balance has no term for. Fly steady legs above the thrusters&apos; hand-over speed, or use the model check, which replays them.</source>
         <translation>Ikke identifiserbart fra denne loggen: tunnelthrusterne gikk i alle %1 stødige segment(er) (opptil %2 o/min) og bærer en ukjent del av netto oppdrift, som den stødige balansen ikke har noe ledd for. Fly stødige etapper over thrusternes overgangsfart, eller bruk modellsjekken, som spiller dem av igjen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="54"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
         <source>%1 dive(s) or climb(s) held a steady pitch but did not fit the balance the other legs calibrated (the depth changed at a pitch and elevator no steady flight has): left out of the estimate.</source>
         <translation>%1 dykk eller stigning(er) holdt stødig stamp, men passet ikke med balansen de andre etappene kalibrerte (dybden endret seg ved en stamp og et dybderor som ingen stødig flyging har): utelatt fra estimatet.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="54"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="59"/>
         <source>The depth steps and speed changes disagreed among themselves more than they added (net buoyancy ± %1 kg with them, ± %2 kg from the steady segments alone): the estimate is the steady segments&apos;.</source>
         <translation>Dybdetrinnene og fartsendringene var mer uenige seg imellom enn de tilførte (netto oppdrift ± %1 kg med dem, ± %2 kg fra de stødige segmentene alene): estimatet er de stødige segmentenes.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="60"/>
         <source>The log put %1 at %2 where the profile has %3 ± %4: more than three prior sigmas away, which no vehicle of this class has, so the steady balance did not describe this log (a pitch sensor bias, legs that were not steady, or a profile of another vehicle). The net buoyancy and CG rest on that balance: check the attitude sensor&apos;s alignment and the profile before moving weights.</source>
         <translation>Loggen la %1 på %2 der profilen har %3 ± %4: mer enn tre a priori-sigma unna, noe ingen fartøy i denne klassen har, så den stødige balansen beskrev ikke denne loggen (en skjevhet i stampesensoren, etapper som ikke var stødige, eller en profil for et annet fartøy). Netto oppdrift og tyngdepunkt hviler på den balansen: kontroller innrettingen av attitydesensoren og profilen før du flytter lodd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="61"/>
         <source>The depth steps and speed changes were not flown again: the vehicle did not fly as commanded (too light or porpoising), and there the replay fits the plane stop and the autopilot instead of the hydrodynamics. The estimate is the steady segments&apos;.</source>
         <translation>Dybdetrinnene og fartsendringene ble ikke fløyet på nytt: fartøyet fløy ikke som kommandert (for lett eller porpoising), og der tilpasser gjenavspillingen rorstoppet og autopiloten i stedet for hydrodynamikken. Estimatet er de stødige segmentenes.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="59"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="62"/>
         <source>The depth steps and speed changes were not flown again: the earlier missions and the known weight changes calibrate the vehicle, and the replay added model error, not information.</source>
         <translation>Dybdetrinnene og fartsendringene ble ikke fløyet på nytt: de tidligere oppdragene og de kjente vektendringene kalibrerer fartøyet, og gjenavspillingen tilførte modellfeil, ikke informasjon.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="55"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="63"/>
         <source>Not identifiable from this log: the steady segments do not determine the heave and pitch balance.</source>
         <translation>Kan ikke bestemmes fra denne loggen: de stødige segmentene bestemmer ikke balansen i hiv og stamp.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="56"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="64"/>
         <source>Elevator zero offset assumed 0 ± %1° (included in the uncertainties): the steady segments do not span enough speeds to tell it from the net buoyancy.</source>
         <translation>Dybderorets nullpunktsavvik er antatt 0 ± %1° (tatt med i usikkerhetene): de stødige segmentene spenner ikke over nok hastigheter til å skille det fra netto oppdrift.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="57"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="65"/>
         <source>The plane coefficients were converted to the log&apos;s elevator sign (trailing edge down positive).</source>
         <translation>Rorkoeffisientene ble regnet om til loggens fortegn for dybderoret (bakkant ned positiv).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="66"/>
         <source>The vehicle&apos;s hydrodynamics were calibrated together with the ballast state (%1 parameters determined by the log).</source>
         <translation>Fartøyets hydrodynamikk ble kalibrert sammen med ballasttilstanden (%1 parametere bestemt av loggen).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="59"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="67"/>
         <source>The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients).</source>
         <translation>Usikkerhetene kommer fra den kalibreringen (%1 % usikkerhet på forhånd per gruppe av hydrodynamiske koeffisienter).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="60"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="68"/>
         <source>The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients; the Munk moment&apos;s form unknown).</source>
         <translation>Usikkerhetene kommer fra den kalibreringen (%1 % usikkerhet på forhånd per gruppe av hydrodynamiske koeffisienter; formen på Munk-momentet er ukjent).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="61"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="69"/>
         <source>BG from the vehicle profile (%1 mm ± %2 %) sets the scale of the pitch moments; BG from a roll test sharpens CG x.</source>
         <translation>BG fra fartøyprofilen (%1 mm ± %2 %) bestemmer skalaen på stampmomentene; BG fra en rulletest gjør tyngdepunkt x skarpere.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="62"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="70"/>
         <source>Once trimmed, the vehicle should cruise at %1 m/s at %2 rpm (this log: %3 m/s); the propeller torque there changes by %4 N m, and the roll the plan levels includes it (CG y at cruise %5 mm).</source>
         <translation>Når fartøyet er trimmet, bør det gå %1 m/s ved %2 o/min (denne loggen: %3 m/s); propellmomentet endres der med %4 N m, og rullingen planen retter opp tar det med (tyngdepunkt y i marsj %5 mm).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="66"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="75"/>
         <source>%1: no change (%2 stays).</source>
         <translation>%1: ingen endring (%2 blir).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="67"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="76"/>
         <source>Priorities (thesis §5.4): net buoyancy %1 to %2 and never negative, then pitch within ±%3, then roll within ±%4; %5 piece(s) to handle.</source>
         <translation>Prioriteringer (avhandlingen §5.4): netto oppdrift %1 til %2 og aldri negativ, deretter stamp innenfor ±%3, deretter rull innenfor ±%4; %5 lodd å håndtere.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="68"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="77"/>
         <source>After the move: net buoyancy %1, pitch %2, roll %3.</source>
         <translation>Etter flyttingen: netto oppdrift %1, stamp %2, rull %3.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="69"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="78"/>
         <source>Half-way policy: this move aims at about half of the needed change (net buoyancy %1 to %2, pitch %3, roll %4); check the vehicle again and repeat.</source>
         <translation>Halvveis-strategi: denne flyttingen sikter mot omtrent halvparten av nødvendig endring (netto oppdrift %1 til %2, stamp %3, rull %4); kontroller fartøyet igjen og gjenta.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="71"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="80"/>
         <source>The four scale readings add up to %1 but the hook reads %2 (tolerance %3): the CG uses the four readings, the mass uses the hook.</source>
         <translation>De fire vekttallene blir til sammen %1, men kroken viser %2 (toleranse %3): tyngdepunktet bruker de fire tallene, massen bruker kroken.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="72"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="81"/>
         <source>h = %1 is implausibly large for a glider (about 6 mm is usual): check the roll signs and which rail the mass hung on.</source>
         <translation>h = %1 er urimelig stor for en glider (omkring 6 mm er vanlig): kontroller fortegnene på rullen og hvilken skinne loddet hang på.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="73"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="82"/>
         <source>The single h values spread by %1 (%2 of the mean): repeat the roll test.</source>
         <translation>De enkelte h-verdiene sprer med %1 (%2 av middelverdien): gjenta rulletesten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="74"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="83"/>
         <source>The bottles cannot hold the level split (bow %1, aft %2): the glider will not float level. Move a disk or rail weight.</source>
         <translation>Flaskene kan ikke ta den vannrette fordelingen (baug %1, akter %2): glideren vil ikke flyte vannrett. Flytt en skive eller et skinnelodd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="75"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="84"/>
         <source>The bottles are full: %1 more is needed for neutral, so the glider stays light. Add ballast elsewhere.</source>
         <translation>Flaskene er fulle: %1 til trengs for nøytral oppdrift, så glideren forblir lett. Legg ballast et annet sted.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="76"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="85"/>
         <source>The bottles are empty: %1 more must come out, so the glider stays HEAVY. Remove a disk or rail weight.</source>
         <translation>Flaskene er tomme: %1 til må ut, så glideren forblir TUNG. Ta ut en skive eller et skinnelodd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="78"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="87"/>
         <source>The CG is not below the CB with the BG of the vehicle profile: the vehicle would capsize. Check BG in the vehicle profile.</source>
         <translation>Tyngdepunktet ligger ikke under oppdriftssenteret med BG fra fartøyprofilen: fartøyet ville kantre. Kontroller BG i fartøyprofilen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="79"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="88"/>
         <source>In the tank (%1, %2) the glider displaces %3 (%4); at %5 the hull measures %6 and is neutral at %7 in %8 water.</source>
         <translation>I tanken (%1, %2) fortrenger glideren %3 (%4); ved %5 måler skroget %6 og er nøytralt ved %7 i vann på %8.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="80"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="89"/>
         <source>It weighs %1, so it is %2 light: the bottles change by %3 (rounded down to whole grams so it never ends heavy).</source>
         <translation>Den veier %1, så den er %2 for lett: flaskene endres med %3 (rundet ned til hele gram så den aldri ender tung).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="81"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="90"/>
         <source>It weighs %1, so it is %2 heavy: the bottles change by %3 (rounded down to whole grams so it never ends heavy).</source>
         <translation>Den veier %1, så den er %2 for tung: flaskene endres med %3 (rundet ned til hele gram så den aldri ender tung).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="82"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="91"/>
         <source>Bow bottles: %1 in %2 and %3 in %4 (%5), so the bow scale would read %6 and the glider floats level.</source>
         <translation>Baugflasker: %1 i %2 og %3 i %4 (%5), så baugvekten ville vise %6 og glideren flyter plant.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="83"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="92"/>
         <source>Aft bottles: %1 in %2 and %3 in %4 (%5), so the aft scale would read %6 and the glider floats level.</source>
         <translation>Akterflasker: %1 i %2 og %3 i %4 (%5), så aktervekten ville vise %6 og glideren flyter plant.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="84"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="93"/>
         <source>No roll test recorded: set the bottles, hang the glider for the roll test (report 4.2) and enter it on the roll-test page; until then the CG height is the profile&apos;s BG.</source>
         <translation>Ingen rulletest registrert: sett flaskene, heng opp glideren for rulletesten (rapport 4.2) og før den inn på rulletestsiden; inntil da er tyngdepunktets høyde profilens BG.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="85"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="94"/>
         <source>Roll test: h = %1 from %2 hung masses, so G sits %3 to %4 of B and %5 below it.</source>
         <translation>Rulletest: h = %1 fra %2 opphengte masser, så G ligger %3 mot %4 av B og %5 under den.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="86"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="95"/>
         <source>Move %1 of rail weight from the %2 wing rail: the battery alone cannot reach the roll.</source>
         <translation>Flytt %1 skinnevekt fra %2 vingeskinne: batteriet alene kan ikke nå rullen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="87"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="96"/>
         <source>Move %1 of lead from the %2 bow bottle: the battery cannot reach the roll.</source>
         <translation>Flytt %1 bly fra %2 baugflaske: batteriet kan ikke nå rullen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="88"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="97"/>
         <source>Move %1 of lead from the %2 bow bottle: the battery and wing rails cannot reach the roll.</source>
         <translation>Flytt %1 bly fra %2 baugflaske: batteriet og vingeskinnene kan ikke nå rullen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="89"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="98"/>
         <source>Set the roll battery to %1 (%2, toward %3; now %4) to bring G straight below B.</source>
         <translation>Sett rullbatteriet til %1 (%2, mot %3; nå %4) for å bringe G rett under B.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="90"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="99"/>
         <source>The battery, wing rails and bow bottles together cannot cancel the roll: %1 remains. Move other masses sideways.</source>
         <translation>Batteriet, vingeskinnene og baugflaskene kan ikke sammen oppheve rullen: %1 gjenstår. Flytt andre masser sideveis.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="91"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="100"/>
         <source>Swap disk column %1 (%2 top, %3 bottom), which %4 G by %5.</source>
         <translation>Bytt om skivesøyle %1 (%2 øverst, %3 nederst), som %4 G med %5.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="92"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="101"/>
         <source>Move %1 of lead from the %2 aft bottle, so h goes from %3 to %4 (target %5).</source>
         <translation>Flytt %1 bly fra %2 akterflaske, så h går fra %3 til %4 (mål %5).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="93"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="102"/>
         <source>The h-arm target %1 cannot be reached with the disk weights and aft bottles; best is %2 (arrangement %3).</source>
         <translation>Målet for h-armen %1 kan ikke nås med skivevektene og akterflaskene; best er %2 (oppsett %3).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="94"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="103"/>
         <source>The predicted net buoyancy %1 is below the profile&apos;s band: the glider would end HEAVY.</source>
         <translation>Forventet netto oppdrift %1 er under profilens bånd: glideren ville ende TUNG.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="95"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="104"/>
         <source>The predicted net buoyancy %1 is above the profile&apos;s band.</source>
         <translation>Forventet netto oppdrift %1 er over profilens bånd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="96"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="105"/>
         <source>The predicted pitch %1 is outside ±%2.</source>
         <translation>Forventet stamp %1 er utenfor ±%2.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="97"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="106"/>
         <source>The predicted roll %1 is outside ±%2.</source>
         <translation>Forventet rull %1 er utenfor ±%2.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="99"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="108"/>
         <source>What is in the bottles was not given: their capacities are checked against half-full bottles. Enter what is installed to check them.</source>
         <translation>Innholdet i flaskene ble ikke oppgitt: kapasitetene kontrolleres mot halvfulle flasker. Før inn hva som er montert for å kontrollere dem.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="100"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="109"/>
         <source>The wing rails cannot take the whole roll correction (%1 g); move the roll battery or a disk weight for the rest.</source>
         <translation>Vingeskinnene kan ikke ta hele rullkorreksjonen (%1 g); flytt rullbatteriet eller en skivevekt for resten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="101"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="110"/>
         <source>the pitch trim (the log has no battery position, or it varies too little): the bottle split is Baird&apos;s level split only</source>
         <translation>stamptrimmen (loggen har ingen batteriposisjon, eller den varierer for lite): fordelingen på flaskene er bare Bairds plane fordeling</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="102"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="111"/>
         <source>the roll (the log has no roll in glides)</source>
         <translation>rullen (loggen har ingen rull under gliding)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="103"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="112"/>
         <source>C_PITCH (the log has no pitch-mass position with enough variation)</source>
         <translation>C_PITCH (loggen har ingen posisjon for stampmassen med nok variasjon)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="104"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="113"/>
         <source>where the grams go: the log carries no geometry of the ballast places; add %1 g at the vehicle&apos;s ballast places so that it stays level</source>
         <translation>hvor grammene skal: loggen har ingen geometri for ballaststedene; legg %1 g på fartøyets ballaststeder slik at det holder seg plant</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="105"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="114"/>
         <source>the ballast (pump) zero offset in the vendor&apos;s setting: only the mass change is known</source>
         <translation>ballastens (pumpens) nullpunktsforskyvning i produsentens innstilling: bare masseendringen er kjent</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="108"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="117"/>
         <source>No change: the vehicle is already as good as the kit allows.</source>
         <translation>Ingen endring: fartøyet er allerede så godt som vektsettet tillater.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="109"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="118"/>
         <source>Next mission at %1: from net buoyancy %2, pitch %3, roll %4 to %5 ± %6, pitch %7 ± %8, roll %9 ± %10 (1 σ).</source>
         <translation>Neste oppdrag ved %1: fra netto oppdrift %2, stamp %3, rull %4 til %5 ± %6, stamp %7 ± %8, rull %9 ± %10 (1 σ).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="110"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="119"/>
         <source>Mass %1 from the last mission: %2 displaced at %3, %4, %5 minus the measured net buoyancy %6.</source>
         <translation>Masse %1 fra forrige oppdrag: %2 fortrengt ved %3, %4, %5 minus målt netto oppdrift %6.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="111"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="120"/>
         <source>Safety margin %1 = %2 × σ %3 (estimate and water): the change keeps at least that much net buoyancy at every planned point.</source>
         <translation>Sikkerhetsmargin %1 = %2 × σ %3 (estimat og vann): endringen beholder minst så mye netto oppdrift i hvert planlagte punkt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="112"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="121"/>
         <source>CG x was not identified from the log: the plan assumes it at the CB and keeps the fore-aft balance. Check pitch on the next mission.</source>
         <translation>Tyngdepunkt x ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder balansen forut-akter. Kontroller stampen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="113"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="122"/>
         <source>CG y was not identified from the log: the plan assumes it at the CB and keeps the side balance. Check roll on the next mission.</source>
         <translation>Tyngdepunkt y ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder sidebalansen. Kontroller rullen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="114"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="123"/>
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="115"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="124"/>
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4: it would sink if it lost power there.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4: det ville synke om det mistet strømmen der.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="116"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="125"/>
         <source>Net buoyancy %1 at the operating depth is above the band (%2) because the safety margin (%3) and the less buoyant planned points (%4 less) come first.</source>
         <translation>Netto oppdrift %1 på operasjonsdybden er over båndet (%2) fordi sikkerhetsmarginen (%3) og de planlagte punktene med mindre oppdrift (%4 mindre) går foran.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="117"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="126"/>
         <source>The net buoyancy band cannot be reached with this kit while keeping the safety margin: no combination of pieces lands between %1 and %2; the nearest safe one is %3.</source>
         <translation>Båndet for netto oppdrift kan ikke nås med dette vektsettet uten å gi opp sikkerhetsmarginen: ingen kombinasjon av lodd lander mellom %1 og %2; den nærmeste sikre er %3.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="118"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="127"/>
         <source>The kit has optional pieces (%1) not used in this plan; allowing them may reach the missed band.</source>
         <translation>Vektsettet har valgfrie lodd (%1) som ikke er brukt i denne planen; tillater du dem, kan båndet som ble bommet på kanskje nås.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="119"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="128"/>
         <source>The estimate&apos;s own uncertainty (pitch %1, roll %2) is wider than a tolerance band; the next mission will tell.</source>
         <translation>Estimatets egen usikkerhet (stamp %1, rull %2) er bredere enn et toleransebånd; neste oppdrag vil vise det.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="120"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="129"/>
         <source>Classic table (thesis App. E): %1, pitch error %2, roll error %3; it moves one %4 piece per point and mission, whatever the size of the error.</source>
         <translation>Klassisk tabell (oppgavens vedlegg E): %1, stampavvik %2, rullavvik %3; den flytter ett lodd på %4 per punkt og oppdrag, uansett hvor stort avviket er.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="121"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="130"/>
         <source>The classic table asks to remove a piece where none is installed, so it changes nothing.</source>
         <translation>Den klassiske tabellen ber om å fjerne et lodd der ingen er montert, så den endrer ingenting.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="122"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="131"/>
         <source>The classic table uses the standard kit only.</source>
         <translation>Den klassiske tabellen bruker bare standard vektsett.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="126"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="136"/>
         <source>Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).</source>
         <translation>Rull er planlagt og forutsagt i marsjfart (%1 o/min, propellmoment inkludert): sidebalansen som holder fartøyet på rett kjøl der, slik oppgaven bedømmer rull (§5.3.3).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="128"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="138"/>
         <source>%1 is a constant %2 %3 everywhere (all phases, depths and speeds)</source>
         <translation>%1 er konstant %2 %3 overalt (alle faser, dybder og hastigheter)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="129"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="139"/>
         <source>%1 grows %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="130"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="140"/>
         <source>%1 shrinks %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="131"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="141"/>
         <source>%1 grows %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="132"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
         <source>%1 shrinks %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="133"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="143"/>
         <source>%1 concentrates at %2 %3 (mean %4 %5 against %6 overall)</source>
         <translation>%1 samler seg ved %2 %3 (middel %4 %5 mot %6 totalt)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="134"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="144"/>
         <source>%1: no factor of the log explains it</source>
         <translation>%1: ingen faktor i loggen forklarer det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="135"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="145"/>
         <source>AUV rigid-body model of the simulator (Fossen form) on smoothed logged states; simulation: replay of the logged commands through the model&apos;s autopilot; ballast state: net buoyancy and CG x/y</source>
         <translation>AUV-stivlegememodellen fra simulatoren (Fossen-form) på glattede loggede tilstander; simulering: de loggede kommandoene spilt av gjennom modellens autopilot; ballasttilstand: netto oppdrift og CG x/y</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="136"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state and Cd0</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand og Cd0</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="137"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state, Cd0 and the lift slope</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand, Cd0 og løftestigningstallet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="241"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="251"/>
         <source>bringing the CG back towards the CB fore-aft</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="242"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="252"/>
         <source>balanced by the other points&apos; fore-aft shares</source>
         <translation>balansert av de andre punktenes andeler forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="243"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="253"/>
         <source>bringing the CG back towards the CB sideways</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="244"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="254"/>
         <source>balanced by the other points&apos; sideways shares</source>
         <translation>balansert av de andre punktenes andeler sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="305"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="315"/>
         <source>%1: %2 (%3; %4 → %5 of %6).</source>
         <translation>%1: %2 (%3; %4 → %5 av %6).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="314"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="324"/>
         <source>%1 is largest during %2: mean %3 %4</source>
         <translation>%1 er størst under %2: middel %3 %4</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="329"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="339"/>
         <source>; independent of %1</source>
         <translation>; uavhengig av %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="224"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="292"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="234"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="302"/>
         <source> and </source>
         <translation> og </translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="228"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="300"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="238"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="310"/>
         <source>remove %1, then add %2</source>
         <translation>fjern %1, legg så til %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="230"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="302"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="240"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="312"/>
         <source>remove %1</source>
         <translation>fjern %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="232"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="304"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="242"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="314"/>
         <source>add %1</source>
         <translation>legg til %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="234"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="244"/>
         <source>%1 mm forward</source>
         <translation>%1 mm forover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="235"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="245"/>
         <source>%1 mm aft</source>
         <translation>%1 mm akterover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="237"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="247"/>
         <source>%1 mm to starboard</source>
         <translation>%1 mm mot styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="238"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="248"/>
         <source>%1 mm to port</source>
         <translation>%1 mm mot babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="247"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="257"/>
         <source>%1: %2 (%3), which lowers the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som senker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="248"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="258"/>
         <source>%1: %2 (%3), which raises the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som øker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="63"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="72"/>
         <source>The vehicle stays %1 heavy even with every removable piece out: it needs added buoyancy or a lighter payload.</source>
         <translation>Fartøyet er fortsatt %1 for tungt selv med alle lodd som kan tas ut, ute: det trenger mer oppdrift eller lettere nyttelast.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="64"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="73"/>
         <source>The search stopped at its limit: this is the best change found, not a proved optimum.</source>
         <translation>Søket stoppet ved grensen sin: dette er den beste endringen som ble funnet, ikke et bevist optimum.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="65"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="74"/>
         <source>The CG is not below the CB after the change: the vehicle would capsize. Check BG and the payload.</source>
         <translation>Tyngdepunktet er ikke under oppdriftssenteret etter endringen: fartøyet ville kantre. Kontroller BG og nyttelasten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="106"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="115"/>
         <source>The thesis mapping leaves the vehicle %1 heavy.</source>
         <translation>Oppgavens fordeling gjør fartøyet %1 for tungt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="123"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="132"/>
         <source>The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short leg(s)); with this log alone it would bring the uncertainty to about %4 kg.</source>
         <translation>Usikkerheten i netto oppdrift (%1 kg) er for stor for båndet på %2 kg: legg kalibreringsmanøveren til neste oppdrag (%3 korte etapper); med denne loggen alene ville den bringe usikkerheten ned til omtrent %4 kg.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="124"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="133"/>
         <source>This move is also a calibration: flown after it and analysed with the last log as history (the known change of mass and moment between them), the next mission&apos;s survey should tell the net buoyancy to about ±%1 kg and CG x to about ±%2 mm, enough for a second move into the band.</source>
         <translation>Denne flyttingen er også en kalibrering: fløyet etter den og analysert med siste logg som historikk (den kjente endringen i masse og moment mellom dem), bør neste oppdrags kartlegging gi netto oppdrift til omtrent ±%1 kg og CG x til omtrent ±%2 mm, nok til at en ny flytting lander i båndet.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="125"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="135"/>
         <source>This move is also a calibration, but flown after it and analysed with the last log as history the next mission&apos;s survey would still leave the net buoyancy at about ±%1 kg (CG x about ±%2 mm), too wide for the band: fly the calibration manoeuvre as well.</source>
         <translation>Denne flyttingen er også en kalibrering, men fløyet etter den og analysert med siste logg som historikk ville neste oppdrags kartlegging fortsatt gi netto oppdrift til omtrent ±%1 kg (CG x omtrent ±%2 mm), for usikkert for båndet: fly kalibreringsmanøveren også.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="260"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="270"/>
         <source>The net buoyancy band %1 to %2 cannot be reached with this kit; best %3</source>
         <translation>Båndet for netto oppdrift %1 til %2 kan ikke nås med dette vektsettet; beste er %3</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="262"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="272"/>
         <source>The pitch band ±%1 cannot be reached with this kit (at rest); best %2</source>
         <translation>Stampbåndet ±%1 kan ikke nås med dette vektsettet (i ro); beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="264"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="274"/>
         <source>The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet mens stampen holdes i båndet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="266"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="276"/>
         <source>The roll band ±%1 cannot be reached with this kit; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="268"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="278"/>
         <source>; flying level at %1 m/s it pitches %2°, inside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, innenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="269"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="279"/>
         <source>; flying level at %1 m/s it pitches %2°, outside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, utenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="272"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="282"/>
         <source>; out of reach whatever the piece sizes: the points&apos; capacities, the installed pieces and the higher priorities limit it</source>
         <translation>; utenfor rekkevidde uansett loddstørrelser: punktenes kapasitet, loddene som er montert og de høyere prioritetene begrenser det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="275"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="285"/>
         <source>; a %1 piece would reach it</source>
         <translation>; et lodd på %1 ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="277"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="287"/>
         <source>; no single extra piece size tried (%1) would reach it</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="279"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="289"/>
         <source>; no single extra piece size tried (%1) would reach it (some were not searched to the end)</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det (noen ble ikke søkt helt ut)</translation>
     </message>
@@ -736,262 +741,262 @@
 <context>
     <name>AdviceWord</name>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
         <source>operating</source>
         <translation>operasjonsdybden</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
         <source>deepest</source>
         <translation>største dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="143"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
         <source>surface</source>
         <translation>overflaten</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="143"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
         <source>transit</source>
         <translation>transitt</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="144"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
         <source>none</source>
         <translation>ingen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
         <source>depth command steps</source>
         <translation>trinn i dybdekommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
         <source>pitch command steps</source>
         <translation>trinn i stampkommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
         <source>speed changes</source>
         <translation>fartsendringer</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
         <source>propeller speed changes</source>
         <translation>endringer i propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="160"/>
         <source>vertical-velocity error</source>
         <translation>avvik i vertikal hastighet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="150"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="160"/>
         <source>vertical-force error</source>
         <translation>avvik i vertikal kraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
         <source>pitch-moment error</source>
         <translation>avvik i stampmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="151"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
         <source>roll-moment error</source>
         <translation>avvik i rullmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
         <source>depth error</source>
         <translation>dybdeavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="152"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
         <source>pitch error</source>
         <translation>stampavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
         <source>roll error</source>
         <translation>rullavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
         <source>speed error</source>
         <translation>fartsavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
         <source>surge-force error</source>
         <translation>avvik i langskipskraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
         <source>error</source>
         <translation>avvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
         <source>pressure</source>
         <translation>trykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
         <source>temperature</source>
         <translation>temperatur</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
         <source>time</source>
         <translation>tid</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
         <source>speed</source>
         <translation>fart</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
         <source>propeller speed</source>
         <translation>propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
         <source>time since an actuator change</source>
         <translation>tid siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="169"/>
         <source>100 dbar</source>
         <translation>100 dbar</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="169"/>
         <source>degC</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="160"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
         <source>hour</source>
         <translation>time</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="160"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
         <source>0.1 m/s</source>
         <translation>0,1 m/s</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
         <source>100 rpm</source>
         <translation>100 o/min</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
         <source>10 deg of pitch</source>
         <translation>10° stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="172"/>
         <source>10 s since an actuator change</source>
         <translation>10 s siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="173"/>
         <source>below</source>
         <translation>under</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="173"/>
         <source>above</source>
         <translation>over</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="174"/>
         <source>after</source>
         <translation>etter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="174"/>
         <source>before</source>
         <translation>før</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="175"/>
         <source>within</source>
         <translation>innenfor</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="176"/>
         <source>surfaces</source>
         <translation>overflateopphold</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="176"/>
         <source>dives</source>
         <translation>dykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="177"/>
         <source>climbs</source>
         <translation>stigninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="177"/>
         <source>levels</source>
         <translation>planflyvninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="178"/>
         <source>turns</source>
         <translation>svinger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="180"/>
         <source>starboard</source>
         <translation>styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="180"/>
         <source>port</source>
         <translation>babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="181"/>
         <source>port to the starboard</source>
         <translation>babord til styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="181"/>
         <source>starboard to the port</source>
         <translation>styrbord til babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="172"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="182"/>
         <source>lower to the upper</source>
         <translation>nedre til øvre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="172"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="182"/>
         <source>upper to the lower</source>
         <translation>øvre til nedre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="173"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="183"/>
         <source>lowers</source>
         <translation>senker</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="173"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="183"/>
         <source>raises</source>
         <translation>hever</translation>
     </message>
@@ -1381,160 +1386,160 @@
         <translation>ikke oppgitt</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="70"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="72"/>
         <source>Calibrated constant</source>
         <translation>Kalibrert konstant</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="70"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="72"/>
         <source>Value ± σ</source>
         <translation>Verdi ± σ</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="70"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="72"/>
         <source>Profile</source>
         <translation>Profil</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="70"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="72"/>
         <source>From</source>
         <translation>Fra</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="81"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="83"/>
         <source>The vehicle constants fitted together with the ballast state. &quot;This log&quot;: the log narrowed it; &quot;stayed at the prior&quot;: the log could not tell, the profile&apos;s value and its uncertainty stand; &quot;the analysis, held&quot;: the model check kept the same log&apos;s analysis&apos;s value and σ; &quot;profile&apos;s kept&quot;: the log measured it and found no significant change, so the estimate kept the profile&apos;s value.</source>
         <translation>Fartøykonstantene tilpasset sammen med ballasttilstanden. «Denne loggen»: loggen snevret den inn; «ble ved forhåndsverdien»: loggen kunne ikke avgjøre det, og profilens verdi og usikkerhet står; «analysens, holdt»: modellkontrollen beholdt verdien og σ fra analysen av den samme loggen; «profilens beholdt»: loggen målte den og fant ingen vesentlig endring, så estimatet beholdt profilens verdi.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="90"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="95"/>
         <source>Nothing was calibrated: the profile&apos;s constants are used as they are.</source>
         <translation>Ingenting ble kalibrert: profilens konstanter brukes som de er.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="127"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="133"/>
         <source>Heave lift of the hull</source>
         <translation>Skrogets løft i hiv</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="128"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="134"/>
         <source>Heave force derivatives</source>
         <translation>Deriverte av hivkraften</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="129"/>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="130"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="135"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="136"/>
         <source>Pitch moment from heave (with the Munk moment)</source>
         <translation>Stampemoment fra hiv (med Munk-momentet)</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="131"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="137"/>
         <source>Cross-flow lift and moment</source>
         <translation>Tverrstrømsløft og -moment</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="132"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="138"/>
         <source>Cross-flow pitch moment</source>
         <translation>Tverrstrømmens stampemoment</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="133"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="139"/>
         <source>Stern-plane effectiveness</source>
         <translation>Virkningen av akterrorene</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="134"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="140"/>
         <source>Elevator zero offset</source>
         <translation>Nullpunktsavvik for dybderoret</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="135"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="141"/>
         <source>BG (CG below CB)</source>
         <translation>BG (CG under CB)</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="136"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="142"/>
         <source>Propeller torque</source>
         <translation>Propellmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="137"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="143"/>
         <source>Pitch damping</source>
         <translation>Stampedemping</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="138"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="144"/>
         <source>Roll damping</source>
         <translation>Rulledemping</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="139"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="145"/>
         <source>Surge drag</source>
         <translation>Motstand i lengderetningen</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="140"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="146"/>
         <source>Hull compressibility</source>
         <translation>Skrogets kompressibilitet</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="141"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="147"/>
         <source>Hull thermal expansion</source>
         <translation>Skrogets termiske utvidelse</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="142"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="148"/>
         <source>Mass drift</source>
         <translation>Masseendring over tid</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="149"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="160"/>
         <source>this log</source>
         <translation>denne loggen</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="170"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="177"/>
         <source>At the profile&apos;s value (the log could not tell, or agreed with it): %1</source>
         <translation>Ved profilens verdi (loggen kunne ikke avgjøre det, eller var enig med den): %1</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="155"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="159"/>
         <source>profile&apos;s kept</source>
         <translation>profilens beholdt</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="152"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="158"/>
         <source>the analysis, held</source>
         <translation>analysens, holdt</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="149"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="160"/>
         <source>stayed at the prior</source>
         <translation>ble ved forhåndsverdien</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="155"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="173"/>
         <source>%1: %2 (profile %3); %4</source>
         <translation>%1: %2 (profil %3); %4</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="170"/>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="179"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="191"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="200"/>
         <source>net buoyancy ± %1 kg</source>
         <translation>netto oppdrift ± %1 kg</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="171"/>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="180"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="192"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="201"/>
         <source>CG x ± %1 mm</source>
         <translation>CG x ± %1 mm</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="172"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="193"/>
         <source>Expected afterwards (1 σ): %1</source>
         <translation>Forventet etterpå (1 σ): %1</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/calibration_table.cpp" line="181"/>
+        <location filename="../../ui/widgets/calibration_table.cpp" line="202"/>
         <source>The move is also a calibration: flown after it and analysed with this log as history, the next mission&apos;s survey should give %1 (1 σ).</source>
         <translation>Flyttingen er også en kalibrering: fløyet etter den og analysert med denne loggen som historikk bør neste oppdrags kartlegging gi %1 (1 σ).</translation>
     </message>
@@ -2000,19 +2005,19 @@
     <name>auv::ui::DeviationPlotsPage</name>
     <message>
         <location filename="../../ui/pages/deviation_plots_page.cpp" line="63"/>
-        <location filename="../../ui/widgets/segment_table.cpp" line="27"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="41"/>
         <source>Depth [m]</source>
         <translation>Dybde [m]</translation>
     </message>
     <message>
         <location filename="../../ui/pages/deviation_plots_page.cpp" line="63"/>
-        <location filename="../../ui/widgets/segment_table.cpp" line="27"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="41"/>
         <source>Pitch [°]</source>
         <translation>Stamp [°]</translation>
     </message>
     <message>
         <location filename="../../ui/pages/deviation_plots_page.cpp" line="63"/>
-        <location filename="../../ui/widgets/segment_table.cpp" line="27"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="41"/>
         <source>Roll [°]</source>
         <translation>Rull [°]</translation>
     </message>
@@ -2098,32 +2103,32 @@
         <translation>Skyggelagt: de stabile segmentene analysen brukte. Hjul eller +/-: zoom; dra eller piltaster: flytt; dobbeltklikk: hele loggen.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/segment_table.cpp" line="27"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="41"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/segment_table.cpp" line="27"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="41"/>
         <source>min</source>
         <translation>min</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/segment_table.cpp" line="48"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="62"/>
         <source>Each steady segment the analysis used (time in minutes): mean error ± its 95 % interval (depth: commanded − measured; pitch: measured − commanded; roll: as measured). A dive or climb (the steady middle of a depth change) shows its mean pitch instead. Click a row to zoom to it.</source>
         <translation>Hvert stabile segment analysen brukte (tid i minutter): middelavvik ± 95 %-intervallet (dybde: ønsket − målt; stamp: målt − ønsket; rull: som målt). Et dykk eller en stigning (den stødige midten av en dybdeendring) viser i stedet sin middelstamp. Klikk på en rad for å zoome til den.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/segment_table.cpp" line="66"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="81"/>
         <source>dive/climb</source>
         <translation>dykk/stigning</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/segment_table.cpp" line="80"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="81"/>
         <source>left out</source>
         <translation>utelatt</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/segment_table.cpp" line="86"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="89"/>
         <source>A dive or climb left out of the calibration: the other legs&apos; balance does not explain it.</source>
         <translation>Et dykk eller en stigning utelatt fra kalibreringen: balansen fra de andre etappene forklarer det ikke.</translation>
     </message>
@@ -2268,7 +2273,7 @@
         <translation>Stampavvik: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/segment_table.cpp" line="46"/>
+        <location filename="../../ui/widgets/segment_table.cpp" line="60"/>
         <source>Each steady glide the analysis used (time in minutes): its mean depth and pitch, and the roll ± its 95 % interval. Click a row to zoom to it.</source>
         <translation>Hvert stabile glid analysen brukte (tid i minutter): middeldybde og -stamp, og rull ± 95 %-intervallet. Klikk på en rad for å zoome til den.</translation>
     </message>
@@ -3112,17 +3117,17 @@
         <translation>Velg loggen fra oppdraget, eller slipp filen på denne siden. Formatet gjenkjennes fra innholdet, ikke filnavnet.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="389"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="396"/>
         <source>Installed masses taken from the log&apos;s configuration line; check them below.</source>
         <translation>Monterte masser hentet fra loggens konfigurasjonslinje; kontroller dem nedenfor.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="401"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="408"/>
         <source>Nothing installed?</source>
         <translation>Ingenting montert?</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="402"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="409"/>
         <source>Every installed mass is 0 kg. If adjustment weights were in the vehicle during this mission, enter them under &quot;Adjustment weight installed during this mission&quot; first: the analysis would otherwise put their weight into the vehicle&apos;s own balance. Analyse with nothing installed?</source>
         <translation>Alle monterte masser er 0 kg. Hvis justeringsvekter satt i fartøyet under dette oppdraget, før dem først inn under «Justeringsvekt montert under dette oppdraget»: ellers legger analysen vekten deres inn i fartøyets egen balanse. Analysere med ingenting montert?</translation>
     </message>
@@ -3167,77 +3172,77 @@
         <translation>Loggfil:</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="153"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="157"/>
         <source>Cancelling…</source>
         <translation>Avbryter…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="218"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="222"/>
         <source>Mission log</source>
         <translation>Oppdragslogg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="265"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="270"/>
         <source>Reading %1…</source>
         <translation>Leser %1…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="289"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="294"/>
         <source>Read completely.</source>
         <translation>Ferdig lest.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="300"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="305"/>
         <source>Import cancelled at %1 %; nothing of this file was kept.</source>
         <translation>Importen ble avbrutt ved %1 %; ingenting fra denne filen ble beholdt.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="304"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="309"/>
         <source>Cannot read this file: %1</source>
         <translation>Kan ikke lese denne filen: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="350"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="356"/>
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="351"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="357"/>
         <source>commanded depth</source>
         <translation>kommandert dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="352"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="358"/>
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="353"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="359"/>
         <source>commanded pitch</source>
         <translation>kommandert stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="354"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="360"/>
         <source>roll</source>
         <translation>rull</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="359"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="365"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="362"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="368"/>
         <source>&lt;b&gt;%1&lt;/b&gt; (%2): &lt;b&gt;%3 rows&lt;/b&gt; × &lt;b&gt;%4 channels&lt;/b&gt; over %5 h. Skipped %6 rows, merged %7, blanked %8 cells.&lt;br&gt;Plotted channels: %9&lt;br&gt;%10</source>
         <translation>&lt;b&gt;%1&lt;/b&gt; (%2): &lt;b&gt;%3 rader&lt;/b&gt; × &lt;b&gt;%4 kanaler&lt;/b&gt; over %5 t. Hoppet over %6 rader, slo sammen %7, tømte %8 celler.&lt;br&gt;Plottede kanaler: %9&lt;br&gt;%10</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="372"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="378"/>
         <source>Nothing was skipped or changed.</source>
         <translation>Ingenting ble hoppet over eller endret.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="372"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="378"/>
         <source>Why: %1.</source>
         <translation>Hvorfor: %1.</translation>
     </message>
@@ -3277,42 +3282,42 @@
         <translation>Vektstykkene som satt i fartøyet mens det gikk denne loggen, per punkt. Analysen trenger vekten fartøyet gikk med.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="175"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="179"/>
         <source> kg</source>
         <translation> kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="176"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="180"/>
         <source>Kit pieces at %1 during the logged mission, kg (what was installed before it flew, not a planned change).</source>
         <translation>Vektstykker ved %1 under den loggede misjonen, kg (det som var montert før turen, ikke en planlagt endring).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="219"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="223"/>
         <source>Mission logs (*.csv *.txt *.log *.dat *.asc *.dba *.nc *.gz *.dbd *.ebd *.sbd *.tbd *.mbd *.nbd *.dcd *.ecd *.scd *.tcd *.mcd *.ncd);;All files (*)</source>
         <translation>Oppdragslogger (*.csv *.txt *.log *.dat *.asc *.dba *.nc *.gz *.dbd *.ebd *.sbd *.tbd *.mbd *.nbd *.dcd *.ecd *.scd *.tcd *.mcd *.ncd);;Alle filer (*)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="248"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="252"/>
         <source>The saved column mapping is damaged and was not used: %1</source>
         <translation>Den lagrede kolonnekoblingen er skadet og ble ikke brukt: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="265"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="270"/>
         <source>%1 and %2 more</source>
         <translation>%1 og %2 til</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="289"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="294"/>
         <source>Read completely with the column mapping.</source>
         <translation>Lest fullstendig med kolonnekoblingen.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="294"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="299"/>
         <source>Read, but no depth or pressure column was recognised: say which column is which.</source>
         <translation>Lest, men ingen dybde- eller trykkolonne ble gjenkjent: angi hvilken kolonne som er hva.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="334"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="339"/>
         <source>The mapping could not be saved: %1</source>
         <translation>Koblingen kunne ikke lagres: %1</translation>
     </message>
@@ -3371,13 +3376,13 @@
     </message>
     <message>
         <location filename="../../ui/pages/model_check_page.cpp" line="97"/>
-        <location filename="../../ui/pages/model_check_page.cpp" line="355"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="365"/>
         <source>model, ballast state only</source>
         <translation>modell, bare ballasttilstand</translation>
     </message>
     <message>
         <location filename="../../ui/pages/model_check_page.cpp" line="97"/>
-        <location filename="../../ui/pages/model_check_page.cpp" line="356"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="366"/>
         <source>model with the accepted terms</source>
         <translation>modell med aksepterte ledd</translation>
     </message>
@@ -3422,18 +3427,18 @@
         <translation>Modell: %1.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="399"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="409"/>
         <source>In %1 % of the resampled fits the log chose %2 instead; the answer&apos;s uncertainty includes that.</source>
         <translation>I %1 % av de omsamplede tilpasningene valgte loggen %2 i stedet; usikkerheten i svaret tar med det.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="508"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="518"/>
         <source>Saved configuration %1: the mission log and its analysis.</source>
         <translation>Lagret konfigurasjon %1: oppdragsloggen og analysen.</translation>
     </message>
     <message>
         <location filename="../../ui/pages/model_check_page.cpp" line="262"/>
-        <location filename="../../ui/pages/model_check_page.cpp" line="354"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="364"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
@@ -3443,77 +3448,77 @@
         <translation> – størst avvik</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="353"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="363"/>
         <source>difference [%1]</source>
         <translation>differanse [%1]</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="355"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="365"/>
         <source>recorded − model, ballast state only</source>
         <translation>opptak − modell, bare ballasttilstand</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="356"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="366"/>
         <source>recorded − model with the accepted terms</source>
         <translation>opptak − modell med aksepterte ledd</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="357"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="367"/>
         <source>%1: RMS recorded − model %2 → %3 %4 (ballast state only → with the accepted terms)</source>
         <translation>%1: RMS opptak − modell %2 → %3 %4 (bare ballasttilstand → med aksepterte ledd)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="379"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="389"/>
         <source>No missing physics found: the model with its ballast state explains this log within its noise.</source>
         <translation>Ingen manglende fysikk funnet: modellen med ballasttilstanden forklarer denne loggen innenfor støyen.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="396"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="406"/>
         <source>This log cannot tell it from: %1</source>
         <translation>Denne loggen kan ikke skille det fra: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="405"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="415"/>
         <source>%1 ± %2 %3</source>
         <translation>%1 ± %2 %3</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="407"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="417"/>
         <source>%1 → %2 %3</source>
         <translation>%1 → %2 %3</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="408"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="418"/>
         <source>Held-out simulation RMS of %1, without and with this term (fitted on one half of the dives/legs, scored on the other).</source>
         <translation>Simulerings-RMS for %1 på holdt-ut data, uten og med dette leddet (tilpasset på den ene halvdelen av dykkene/etappene, vurdert på den andre).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="421"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="431"/>
         <source>&lt;b&gt;%1&lt;/b&gt; acts where: %2</source>
         <translation>&lt;b&gt;%1&lt;/b&gt; virker der: %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="422"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="432"/>
         <source>&lt;b&gt;Where the ballast-only model misses&lt;/b&gt;:</source>
         <translation>&lt;b&gt;Der modellen med bare ballasttilstand bommer&lt;/b&gt;:</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="434"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="444"/>
         <source>%1, %2: %3</source>
         <translation>%1, %2: %3</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="435"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="445"/>
         <source>Cannot be told apart: %1</source>
         <translation>Kan ikke skilles: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="480"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="490"/>
         <source>The accepted terms could not be added to the vehicle model: %1</source>
         <translation>De godtatte leddene kunne ikke legges til fartøymodellen: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="505"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="515"/>
         <source>Not saved: %1</source>
         <translation>Ikke lagret: %1</translation>
     </message>
@@ -3528,13 +3533,14 @@
         <translation>Ballasttilstand: netto oppdrift &lt;b&gt;%1&lt;/b&gt;, CG − CB x &lt;b&gt;%2&lt;/b&gt;, y &lt;b&gt;%3&lt;/b&gt; (modellen med bare ballasttilstand: %4 kg).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/model_check_page.cpp" line="291"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="301"/>
         <source>Net buoyancy with the accepted terms &lt;b&gt;%1&lt;/b&gt; (ballast state alone: %2 kg).</source>
         <translation>Netto oppdrift med de godtatte leddene &lt;b&gt;%1&lt;/b&gt; (bare ballasttilstand: %2 kg).</translation>
     </message>
     <message>
         <location filename="../../ui/pages/model_check_page.cpp" line="286"/>
-        <location filename="../../ui/pages/model_check_page.cpp" line="292"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="298"/>
+        <location filename="../../ui/pages/model_check_page.cpp" line="302"/>
         <source> kg</source>
         <translation> kg</translation>
     </message>
@@ -3643,255 +3649,255 @@
 <context>
     <name>auv::ui::PreMissionPage</name>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="36"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="44"/>
         <source>Plan the next mission</source>
         <translation>Planlegg neste oppdrag</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="37"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="45"/>
         <source>From what the last mission showed and the water of the next one: which pieces to add or remove.</source>
         <translation>Ut fra hva forrige oppdrag viste og vannet i det neste: hvilke vektbiter som skal legges til eller fjernes.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="39"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="47"/>
         <source>What the plan starts from</source>
         <translation>Hva planen bygger på</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="54"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="62"/>
         <source>Next mission&apos;s water</source>
         <translation>Vannet i neste oppdrag</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="55"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="63"/>
         <source>&amp;Last mission&apos;s CTD</source>
         <translation>Siste oppdrags &amp;CTD</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="57"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="65"/>
         <source>Fly in the water the analysed mission measured: its temperature and salinity at its operating depth.</source>
         <translation>Kjør i vannet det analyserte oppdraget målte: temperatur og salinitet på dets operasjonsdybde.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="58"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="66"/>
         <source>&amp;Values I enter</source>
         <translation>&amp;Verdier jeg skriver inn</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="60"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="68"/>
         <source>Another area, season or depth: enter the temperature and salinity you measured or expect.</source>
         <translation>Annet område, annen årstid eller dybde: skriv inn temperaturen og saliniteten du har målt eller forventer.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="65"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="73"/>
         <source>Water temperature at the operating depth (CTD cast), in °C.</source>
         <translation>Vanntemperatur på operasjonsdybden (CTD-profil), i °C.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="66"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="74"/>
         <source>enter °C</source>
         <translation>skriv inn °C</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="67"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="75"/>
         <source>Practical salinity at the operating depth (35 = open ocean).</source>
         <translation>Praktisk salinitet på operasjonsdybden (35 = åpent hav).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="68"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="76"/>
         <source>Depth where the vehicle spends most of the mission: the band applies there.</source>
         <translation>Dybden der fartøyet er mesteparten av oppdraget: båndet gjelder der.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="72"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="80"/>
         <source>Latitude of the area (gravity for depth to pressure).</source>
         <translation>Breddegrad for området (tyngdekraft for dybde til trykk).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="88"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="96"/>
         <source>&amp;Temperature:</source>
         <translation>Te&amp;mperatur:</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="89"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="97"/>
         <source>&amp;Salinity:</source>
         <translation>&amp;Salinitet:</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="90"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="98"/>
         <source>Operating &amp;depth:</source>
         <translation>&amp;Operasjonsdybde:</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="91"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="99"/>
         <source>D&amp;eepest depth:</source>
         <translation>&amp;Dypeste dybde:</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="92"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="100"/>
         <source>Lat&amp;itude:</source>
         <translation>&amp;Breddegrad:</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="102"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="110"/>
         <source>Policy</source>
         <translation>Strategi</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="103"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="111"/>
         <source>E&amp;xact: the whole change now</source>
         <translation>&amp;Eksakt: hele endringen nå</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="105"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="113"/>
         <source>Pieces that bring net buoyancy, pitch and roll into the bands as well as the kit allows.</source>
         <translation>Vektbiter som bringer netto oppdrift, stamp og rull inn i båndene så godt vektsettet tillater.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="106"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="114"/>
         <source>H&amp;alf-way: about half the change</source>
         <translation>H&amp;alvveis: omtrent halve endringen</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="108"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="116"/>
         <source>When the estimate is uncertain: move about half way, still never heavy.</source>
         <translation>Når estimatet er usikkert: flytt omtrent halvveis, men aldri tungt.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="109"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="117"/>
         <source>&amp;Classic: the thesis&apos;s table</source>
         <translation>&amp;Klassisk: tabellen i oppgaven</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="111"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="119"/>
         <source>The thesis&apos;s slow control loop (App. E): one smallest piece per point from the signs of the deviations. For comparison.</source>
         <translation>Oppgavens langsomme reguleringssløyfe (vedlegg E): én minste vektbit per punkt ut fra fortegnene på avvikene. Til sammenligning.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="120"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="128"/>
         <source>Also use the kit&apos;s optional pieces (HUGIN: 0.5 kg, thesis §8.1) - only if you have them.</source>
         <translation>Bruk også vektsettets valgfrie biter (HUGIN: 0,5 kg, oppgaven §8.1) - bare hvis du har dem.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="190"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="198"/>
         <source>Use the optional %1 &amp;piece</source>
         <translation>Bruk den valgfrie %1-b&amp;iten</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="236"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="253"/>
         <source>Nothing to plan from: %1 Finish saves the mission to the history; plan the next mission from a log that shows the net buoyancy.</source>
         <translation>Ingenting å planlegge ut fra: %1 Fullfør lagrer oppdraget i historikken; planlegg neste oppdrag ut fra en logg som viser netto oppdrift.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="239"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="256"/>
         <source>Nothing to plan from: %1</source>
         <translation>Ingenting å planlegge ut fra: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="249"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="266"/>
         <source>neutral</source>
         <translation>nøytral</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="250"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="267"/>
         <source>too light</source>
         <translation>for lett</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="251"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="268"/>
         <source>too heavy</source>
         <translation>for tung</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="410"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="434"/>
         <source>Saved configuration %1: the mission log and its analysis.</source>
         <translation>Lagret konfigurasjon %1: oppdragsloggen og analysen.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="261"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="278"/>
         <source>No net buoyancy was measured: the recorded weight against the buoyancy gives &lt;b&gt;%1 kg&lt;/b&gt; (%2), and the classic table works from the deviations.</source>
         <translation>Netto oppdrift ble ikke målt: registrert vekt mot oppdriften gir &lt;b&gt;%1 kg&lt;/b&gt; (%2), og den klassiske tabellen bruker avvikene.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="268"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="285"/>
         <source>CG − CB: x %1, y %2</source>
         <translation>CG − CB: x %1, y %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="269"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="286"/>
         <source> (y that levels it at %1 rpm)</source>
         <translation> (y som gir null rull ved %1 o/min)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="277"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="294"/>
         <source>From %1</source>
         <translation>Fra %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="280"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="297"/>
         <source>; its water measured %1 (%2 days ago)</source>
         <translation>; vannet målt %1 (for %2 dager siden)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="287"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="304"/>
         <source>Installed now (%1): %2.</source>
         <translation>Montert nå (%1): %2.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="289"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="306"/>
         <source>The last mission&apos;s water is older than one month (thesis §5.5.3): measure the temperature again and enter it.</source>
         <translation>Vannet fra siste oppdrag er eldre enn én måned (oppgaven §5.5.3): mål temperaturen på nytt og skriv den inn.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="335"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="359"/>
         <source>Deepest depth: %1 m is shallower than the operating depth (%2 m); enter the deepest depth the mission goes to, at least %2 m.</source>
         <translation>Største dybde: %1 m er grunnere enn operasjonsdybden (%2 m); skriv inn den største dybden oppdraget går til, minst %2 m.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="342"/>
         <location filename="../../ui/pages/pre_mission_page.cpp" line="366"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="390"/>
         <source>Enter the next mission&apos;s water temperature.</source>
         <translation>Skriv inn vanntemperaturen for neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="361"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="385"/>
         <source>In-situ density %1 kg/m³</source>
         <translation>In situ-tetthet %1 kg/m³</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="407"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="431"/>
         <source>Not saved: %1</source>
         <translation>Ikke lagret: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="266"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="283"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="255"/>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="381"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="272"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="405"/>
         <source> kg</source>
         <translation> kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="70"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="78"/>
         <source>Deepest depth the mission goes to (the analysed log&apos;s deepest by default): the vehicle must not be heavy there either. At least the operating depth.</source>
         <translation>Største dybde oppdraget går til (den analyserte loggens største som standard): fartøyet må ikke være tungt der heller. Minst operasjonsdybden.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="383"/>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="385"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="407"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="409"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="254"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="271"/>
         <source>Net buoyancy &lt;b&gt;%1&lt;/b&gt; (%2) in %3 kg/m³ water at %4 m (%5 °C, %6 PSU).</source>
         <translation>Netto oppdrift &lt;b&gt;%1&lt;/b&gt; (%2) i %3 kg/m³ vann på %4 m (%5 °C, %6 PSU).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/pre_mission_page.cpp" line="378"/>
+        <location filename="../../ui/pages/pre_mission_page.cpp" line="402"/>
         <source>Plan: %1 piece(s) to handle; afterwards net buoyancy %2, pitch %3, roll %4 at %5 m.</source>
         <translation>Plan: %1 vektbit(er) å håndtere; etterpå netto oppdrift %2, stamp %3, rull %4 på %5 m.</translation>
     </message>
@@ -5202,39 +5208,39 @@
         <translation>Vannet i neste oppdrag</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="272"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="274"/>
         <source>What to change</source>
         <translation>Hva som skal endres</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="241"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="243"/>
         <source>Expected result</source>
         <translation>Forventet resultat</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="245"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="247"/>
         <source>Warnings</source>
         <translation>Advarsler</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="246"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="248"/>
         <source>⚠ %1</source>
         <translation>⚠ %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="260"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="262"/>
         <source>Steps and notes</source>
         <translation>Trinn og merknader</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="316"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="331"/>
         <source>Where (top view, bow to the right)</source>
         <translation>Hvor (sett ovenfra, baugen til høyre)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="348"/>
-        <location filename="../../ui/wizard/work_order.cpp" line="352"/>
-        <location filename="../../ui/wizard/work_order.cpp" line="377"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="363"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="367"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="392"/>
         <source>cannot write %1: check the folder and its permissions</source>
         <translation>kan ikke skrive %1: sjekk mappen og tilgangene</translation>
     </message>
@@ -5249,12 +5255,12 @@
         <translation>Rull %1 (bånd ±%2°)%3</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="250"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="252"/>
         <source>What was calibrated</source>
         <translation>Hva som ble kalibrert</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/work_order.cpp" line="255"/>
+        <location filename="../../ui/wizard/work_order.cpp" line="257"/>
         <source>Calibration manoeuvre for the next mission</source>
         <translation>Kalibreringsmanøver for neste oppdrag</translation>
     </message>

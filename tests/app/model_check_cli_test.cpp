@@ -222,3 +222,31 @@ TEST(ModelCheckCli, ThrustersInEverySteadySegmentLeaveTheEstimateToTheCheck) {
 }
 
 }  // namespace
+
+// model-check --bg-mm gives the check's analysis the BG of a roll test, as
+// 'analyze --bg-mm' does (with BG free a pitch sensor bias cannot be told
+// from the ballast state); a BG that is not a positive length is refused.
+TEST(ModelCheckCli, BgFromARollTestReachesTheChecksAnalysis) {
+  const std::string plan = tmp("bg_plan.json"), log = tmp("bg_log.csv"), out = tmp("bg_mc.json");
+  std::ofstream(plan) << R"({
+  "format": "auvballast-mission-plan", "version": 1, "vehicle": "hugin1000",
+  "water": { "cast": [ { "depth_m": 0, "temperature_degC": 9, "salinity_psu": 34 },
+                       { "depth_m": 100, "temperature_degC": 7, "salinity_psu": 35 } ], "max_depth_m": 150 },
+  "installed_kg": [7.2, 7.2, 25.2, 25.2],
+  "initial": { "depth_m": 30, "speed_mps": 2.0 },
+  "legs": [ { "type": "depth", "depth_m": 30, "prop_demand": 130, "duration_s": 400 },
+            { "type": "depth", "depth_m": 50, "prop_demand": 180, "duration_s": 400 } ],
+  "options": { "trace_interval_s": 1.0, "seed": 7 }
+})";
+  ASSERT_EQ(runCli("simulate --vehicle hugin1000 --plan " + plan + " --out " + log).code, 0);
+  const std::string base = "model-check --vehicle hugin1000 --log " + log + " --installed 7.2,7.2,25.2,25.2";
+  const auto r = runCli(base + " --bg-mm 23.5 --json " + out);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json est = readJson(out)["details"]["auv_estimate"];
+  EXPECT_DOUBLE_EQ(est["bg_mm"].get<double>(), 23.5);
+  EXPECT_EQ(est["bg_source"], "--bg-mm");
+  const auto bad = runCli(base + " --bg-mm -3");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("bg-mm"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("must be positive"), std::string::npos) << bad.err;
+}
