@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "discrepancy/held_law_retest.h"
 #include "discrepancy/model_check.h"
 #include "discrepancy/vehicle_check.h"
 #include "identification_harness.h"
@@ -99,8 +100,9 @@ int main(int argc, char** argv) {
     h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double, double) {
       discrepancy::CheckSetup setup;
       if (with_analysis) setup.analysis = &rep;  // as the CLI and the wizard check a log
-      const discrepancy::ModelCheckResult r =
+      discrepancy::ModelCheckResult r =
           discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, h.profile(), AUV_RESOURCE_DIR, setup));
+      if (with_analysis) discrepancy::retestHeldLawsWithFoundPitchBias(log, h.profile(), rep, r);
       ++t.logs;
       found.clear();
       const int otherBefore = t.other;

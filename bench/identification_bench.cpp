@@ -29,6 +29,7 @@
 
 #include "analysis/calibration_parameter.h"
 #include "analysis/mission_analysis.h"
+#include "discrepancy/held_law_retest.h"
 #include "discrepancy/model_check.h"
 #include "discrepancy/plan_estimate.h"
 #include "discrepancy/vehicle_check.h"
@@ -103,8 +104,9 @@ struct ModelCheckTally {
            double x_truth, bool verbose) {
     discrepancy::CheckSetup setup;
     setup.analysis = &rep;  // as the CLI and the wizard check a log: with its analysis
-    const discrepancy::ModelCheckResult r =
+    discrepancy::ModelCheckResult r =
         discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, v, AUV_RESOURCE_DIR, setup));
+    discrepancy::retestHeldLawsWithFoundPitchBias(log, v, rep, r);
     ++logs;
     std::vector<std::string> ids;
     for (const auto& m : r.missing_physics) ids.push_back(m.id), ++terms[m.id];

@@ -17,6 +17,7 @@
 #include "common/input_error.h"
 #include "common/units.h"
 #include "discrepancy/glider_ballast_answer.h"
+#include "discrepancy/held_law_retest.h"
 #include "discrepancy/model_check_report.h"
 #include "discrepancy/profile_update.h"
 #include "discrepancy/vehicle_check.h"
@@ -109,8 +110,9 @@ int runModelCheck(const ModelCheckOpts& o) {
   setup.analysis = &r;  // an AUV's check holds this analysis's calibration, in its water
   const std::unique_ptr<discrepancy::CheckModel> model = aboutFile(
       logArgumentLabel(o.log), [&] { return discrepancy::makeCheckModel(log, v, app::resourceDir(), setup); });
-  const discrepancy::ModelCheckResult mc =
+  discrepancy::ModelCheckResult mc =
       aboutFile(logArgumentLabel(o.log), [&] { return discrepancy::runModelCheck(*model, mo); });
+  discrepancy::retestHeldLawsWithFoundPitchBias(log, v, r, mc);
   discrepancy::mergeIntoAnalysisJson(j, mc, o.accept);
   if (!readReport.clean()) j["model_check"]["import"] = readReport.summary();
   const auto* glider = dynamic_cast<const discrepancy::GliderCheckModel*>(model.get());

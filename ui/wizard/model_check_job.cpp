@@ -3,6 +3,7 @@
 #include <QtConcurrent/QtConcurrent>
 
 #include "common/input_error.h"
+#include "discrepancy/held_law_retest.h"
 #include "wizard/worker_pool.h"
 
 namespace auv::ui {
@@ -39,6 +40,7 @@ void ModelCheckJob::start(std::shared_ptr<const MissionLog> log, VehicleProfile 
       out.model = model;
       out.description = model->description();
       out.result = discrepancy::runModelCheck(*model, options);
+      if (analysis) discrepancy::retestHeldLawsWithFoundPitchBias(*log, vehicle, *analysis, *out.result);
       out.overlay = discrepancy::simulationOverlay(*model, *out.result, *log);
       out.ok = true;
     } catch (const std::exception& e) {

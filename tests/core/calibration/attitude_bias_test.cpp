@@ -6,13 +6,19 @@
 // buoyancy.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "analysis/attitude_sensor_bias.h"
 #include "analysis/mission_analysis.h"
+#include "discrepancy/held_law_retest.h"
+#include "discrepancy/model_check.h"
+#include "discrepancy/profile_update.h"
+#include "discrepancy/vehicle_check.h"
 #include "identification_harness.h"
+#include "vehicle/profile_writer.h"
 
 namespace auv::identification {
 namespace {
@@ -109,6 +115,47 @@ TEST(AttitudeSensorBias, TheAcceptedBiasesSigmaIsInTheBallastStatesSigma) {
     EXPECT_EQ(carried.notes.front().args().at(1), "0.28");
   };
   h.run(5501, false);
+}
+
+// The same truth checked as the CLI and the wizard check it: the analysis
+// read the biased pitch as true and fitted a thermal expansion of 2e-4
+// 1/degC, which the check named first, beside the pitch sensor bias it
+// found. Analysed again with that bias taken out, the legs show no law: the
+// law is withdrawn, --accept writes only the bias, and a note says why.
+TEST(AttitudeSensorBias, AHullLawThatWasTheBiasReadAsTrueIsWithdrawn) {
+  Harness h;
+  h.concealed.pitch_bias_deg = 1.0;
+  int called = 0;
+  h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double, double) {
+    ++called;
+    discrepancy::CheckSetup setup;
+    setup.analysis = &rep;
+    discrepancy::ModelCheckResult r =
+        discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, h.profile(), AUV_RESOURCE_DIR, setup));
+    const auto named = [&](const char* id) {
+      return std::any_of(r.missing_physics.begin(), r.missing_physics.end(),
+                         [&](const discrepancy::MissingPhysics& m) { return m.id == id; });
+    };
+    ASSERT_TRUE(named("thermal_expansion"));  // what the biased legs made of it
+    ASSERT_TRUE(named("pitch_sensor_bias"));
+    const std::size_t thermal = *discrepancy::findTerm("thermal_expansion");
+    EXPECT_NE(r.accepted[thermal], 0.0);
+
+    discrepancy::retestHeldLawsWithFoundPitchBias(log, h.profile(), rep, r);
+    EXPECT_FALSE(named("thermal_expansion"));
+    ASSERT_FALSE(r.missing_physics.empty());
+    EXPECT_EQ(r.missing_physics.front().id, "pitch_sensor_bias");
+    EXPECT_EQ(r.accepted[thermal], 0.0);
+    ASSERT_FALSE(r.notes.empty());
+    EXPECT_EQ(r.notes.back().rfind("thermal_expansion", 0), 0u) << r.notes.back();
+    EXPECT_NE(r.notes.back().find("withdrawn"), std::string::npos) << r.notes.back();
+    const nlohmann::json written =
+        discrepancy::profileWithAcceptedTerms(profileToJson(h.profile()), h.profile(), r, "5501");
+    EXPECT_EQ(written["hull"].value("thermal_expansion_per_degC", 0.0), h.profile().hull.thermal_expansion_per_degC);
+    EXPECT_NEAR(written["model_check"]["terms"]["pitch_sensor_bias"].get<double>(), 1.0, 0.3);
+  };
+  h.run(5501, false);
+  EXPECT_EQ(called, 1);
 }
 
 }  // namespace

@@ -1,0 +1,71 @@
+#include "discrepancy/held_law_retest.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "analysis/mission_analysis.h"
+#include "common/units.h"
+#include "discrepancy/physics_terms.h"
+
+namespace auv::discrepancy {
+namespace {
+
+const analysis::CalibrationParameter* parameter(const analysis::AnalysisReport& r, const std::string& id) {
+  for (const auto& c : r.calibration)
+    if (c.id == id) return &c;
+  return nullptr;
+}
+
+bool isHeldLaw(const MissingPhysics& m, const analysis::AnalysisReport& r) {
+  if (m.id != "hull_compressibility" && m.id != "thermal_expansion" && m.id != "mass_drift") return false;
+  const analysis::CalibrationParameter* p = parameter(r, m.id);
+  return p && p->used;
+}
+
+// The options the analysis ran with, as far as its report keeps them.
+analysis::AnalysisOptions optionsOf(const analysis::AnalysisReport& r) {
+  analysis::AnalysisOptions a;
+  a.log_name = r.log_name;
+  if (r.details.contains("installed_kg") && r.details["installed_kg"].is_array())
+    a.installed_kg = r.details["installed_kg"].get<std::vector<double>>();
+  const nlohmann::json* e = r.details.contains("auv_estimate") ? &r.details["auv_estimate"] : nullptr;
+  if (e && e->value("bg_source", "") == "--bg-mm" && e->contains("bg_mm") && (*e)["bg_mm"].is_number())
+    a.bg_m = units::mmToM((*e)["bg_mm"].get<double>());
+  return a;
+}
+
+}  // namespace
+
+void retestHeldLawsWithFoundPitchBias(const MissionLog& log, const VehicleProfile& v,
+                                      const analysis::AnalysisReport& analysis, ModelCheckResult& result) {
+  if (v.kind == "glider") return;
+  auto& found = result.missing_physics;
+  const auto bias = std::find_if(found.begin(), found.end(), [](const MissingPhysics& m) { return m.id == "pitch_sensor_bias"; });
+  if (bias == found.end()) return;
+  if (std::none_of(found.begin(), found.end(), [&](const MissingPhysics& m) { return isHeldLaw(m, analysis); })) return;
+  const double increment_deg = bias->value - bias->profile_value;
+  VehicleProfile corrected = v;
+  nlohmann::json& terms = corrected.sections["model_check"]["terms"];
+  if (!terms.is_object()) terms = nlohmann::json::object();
+  terms["pitch_sensor_bias"] = terms.value("pitch_sensor_bias", 0.0) + increment_deg;
+  const analysis::AnalysisReport again = analysis::analyzeMission(log, corrected, optionsOf(analysis));
+  std::vector<MissingPhysics> kept;
+  for (const MissingPhysics& m : found) {
+    const analysis::CalibrationParameter* p = isHeldLaw(m, analysis) ? parameter(again, m.id) : nullptr;
+    if (!p || p->used) {
+      kept.push_back(m);
+      continue;
+    }
+    result.accepted[*findTerm(m.id)] = 0.0;  // --accept must not write it
+    char b[320];
+    std::snprintf(b, sizeof b,
+                  "%s %.3g %s (the analysis's, from the steady legs) withdrawn: with the pitch sensor bias of %.2f deg "
+                  "taken out of the log the legs show no significant %s (%.3g +- %.2g); it was the bias read as true",
+                  m.id.c_str(), m.value, m.unit.c_str(), increment_deg, m.id.c_str(), p->value, p->sigma);
+    result.notes.emplace_back(b);
+  }
+  found = std::move(kept);
+}
+
+}  // namespace auv::discrepancy
