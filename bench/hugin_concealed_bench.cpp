@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
       if (with_analysis) setup.analysis = &rep;  // as the CLI and the wizard check a log
       discrepancy::ModelCheckResult r =
           discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, h.profile(), AUV_RESOURCE_DIR, setup));
-      if (with_analysis) discrepancy::retestHeldLawsWithFoundPitchBias(log, h.profile(), rep, r);
+      if (with_analysis) discrepancy::followFoundPitchBias(log, h.profile(), rep, r);
       ++t.logs;
       found.clear();
       const int otherBefore = t.other;

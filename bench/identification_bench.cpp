@@ -106,7 +106,7 @@ struct ModelCheckTally {
     setup.analysis = &rep;  // as the CLI and the wizard check a log: with its analysis
     discrepancy::ModelCheckResult r =
         discrepancy::runModelCheck(*discrepancy::makeCheckModel(log, v, AUV_RESOURCE_DIR, setup));
-    discrepancy::retestHeldLawsWithFoundPitchBias(log, v, rep, r);
+    discrepancy::followFoundPitchBias(log, v, rep, r);
     ++logs;
     std::vector<std::string> ids;
     for (const auto& m : r.missing_physics) ids.push_back(m.id), ++terms[m.id];

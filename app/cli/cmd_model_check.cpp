@@ -112,7 +112,7 @@ int runModelCheck(const ModelCheckOpts& o) {
       logArgumentLabel(o.log), [&] { return discrepancy::makeCheckModel(log, v, app::resourceDir(), setup); });
   discrepancy::ModelCheckResult mc =
       aboutFile(logArgumentLabel(o.log), [&] { return discrepancy::runModelCheck(*model, mo); });
-  discrepancy::retestHeldLawsWithFoundPitchBias(log, v, r, mc);
+  discrepancy::followFoundPitchBias(log, v, r, mc);
   discrepancy::mergeIntoAnalysisJson(j, mc, o.accept);
   if (!readReport.clean()) j["model_check"]["import"] = readReport.summary();
   const auto* glider = dynamic_cast<const discrepancy::GliderCheckModel*>(model.get());

@@ -37,19 +37,31 @@ analysis::AnalysisOptions optionsOf(const analysis::AnalysisReport& r) {
 
 }  // namespace
 
-void retestHeldLawsWithFoundPitchBias(const MissionLog& log, const VehicleProfile& v,
-                                      const analysis::AnalysisReport& analysis, ModelCheckResult& result) {
+void followFoundPitchBias(const MissionLog& log, const VehicleProfile& v, const analysis::AnalysisReport& analysis,
+                          ModelCheckResult& result) {
   if (v.kind == "glider") return;
   auto& found = result.missing_physics;
   const auto bias = std::find_if(found.begin(), found.end(), [](const MissingPhysics& m) { return m.id == "pitch_sensor_bias"; });
   if (bias == found.end()) return;
-  if (std::none_of(found.begin(), found.end(), [&](const MissingPhysics& m) { return isHeldLaw(m, analysis); })) return;
   const double increment_deg = bias->value - bias->profile_value;
   VehicleProfile corrected = v;
-  nlohmann::json& terms = corrected.sections["model_check"]["terms"];
+  nlohmann::json& mc = corrected.sections["model_check"];
+  nlohmann::json& terms = mc["terms"];
   if (!terms.is_object()) terms = nlohmann::json::object();
   terms["pitch_sensor_bias"] = terms.value("pitch_sensor_bias", 0.0) + increment_deg;
+  // Its sigma, as --accept would record it: carried into the ballast state's.
+  mc["accepted"] = nlohmann::json::array({{{"id", "pitch_sensor_bias"}, {"sigma", bias->sigma}}});
   const analysis::AnalysisReport again = analysis::analyzeMission(log, corrected, optionsOf(analysis));
+  if (again.net_buoyancy_kg.known) {
+    ModelCheckResult::BiasFreeAnalysis b;
+    b.pitch_bias_deg = increment_deg;
+    b.pitch_bias_sigma_deg = bias->sigma;
+    b.net_buoyancy_kg = again.net_buoyancy_kg.value;
+    b.net_buoyancy_sigma_kg = again.net_buoyancy_kg.sigma;
+    b.has_cg_x = again.cg_x_mm.known;
+    if (b.has_cg_x) b.cg_x_mm = again.cg_x_mm.value, b.cg_x_sigma_mm = again.cg_x_mm.sigma;
+    result.analysis_without_pitch_bias = b;
+  }
   std::vector<MissingPhysics> kept;
   for (const MissingPhysics& m : found) {
     const analysis::CalibrationParameter* p = isHeldLaw(m, analysis) ? parameter(again, m.id) : nullptr;

@@ -21,6 +21,7 @@
 //      residual and each accepted term concentrates (localisation.h).
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -166,6 +167,16 @@ struct ModelCheckResult {
   Params final_params, base_params;
   std::vector<RivalFit> rival_fits;
   std::vector<std::string> notes, warnings;
+  // The log's analysis again with the pitch sensor bias the check found
+  // taken out, its sigma carried (followFoundPitchBias, held_law_retest.h):
+  // where that term is accepted, the analysis side of the plan's estimate.
+  struct BiasFreeAnalysis {
+    double pitch_bias_deg = 0.0, pitch_bias_sigma_deg = 0.0;
+    double net_buoyancy_kg = 0.0, net_buoyancy_sigma_kg = 0.0;
+    bool has_cg_x = false;
+    double cg_x_mm = 0.0, cg_x_sigma_mm = 0.0;
+  };
+  std::optional<BiasFreeAnalysis> analysis_without_pitch_bias;
 };
 
 ModelCheckResult runModelCheck(const CheckModel& model, const ModelCheckOptions& options = {});

@@ -142,6 +142,14 @@ nlohmann::json toJson(const ModelCheckResult& r) {
   for (const Localisation& l : r.localisation) loc.push_back(localisationJson(l));
   mc["localisation"] = loc;
   mc["notes"] = r.notes;
+  if (const auto& b = r.analysis_without_pitch_bias) {
+    nlohmann::json x = {{"pitch_sensor_bias_deg", num(b->pitch_bias_deg)},
+                        {"pitch_sensor_bias_sigma_deg", num(b->pitch_bias_sigma_deg)},
+                        {"net_buoyancy_kg", num(b->net_buoyancy_kg)},
+                        {"net_buoyancy_sigma_kg", num(b->net_buoyancy_sigma_kg)}};
+    if (b->has_cg_x) x["cg_offset_mm"] = {{"x", num(b->cg_x_mm)}}, x["cg_offset_sigma_mm"] = {{"x", num(b->cg_x_sigma_mm)}};
+    mc["analysis_without_pitch_bias"] = x;
+  }
   mc["warnings"] = r.warnings;
   j["model_check"] = mc;
   return j;
@@ -183,6 +191,18 @@ void mergeIntoAnalysisJson(nlohmann::json& a, const ModelCheckResult& r, bool te
           sigma = cs;
         value = cv;
       };
+      // planEstimate's analysis side with an accepted pitch sensor bias: the
+      // log analysed again without it.
+      if (mc.contains("analysis_without_pitch_bias")) {
+        const nlohmann::json& f = mc["analysis_without_pitch_bias"];
+        a["net_buoyancy_kg"] = f["net_buoyancy_kg"];
+        a["net_buoyancy_sigma_kg"] = f["net_buoyancy_sigma_kg"];
+        if (f.contains("cg_offset_mm") && a.contains("cg_offset_mm") && a["cg_offset_mm"].is_object() &&
+            a.contains("cg_offset_sigma_mm") && a["cg_offset_sigma_mm"].is_object()) {
+          a["cg_offset_mm"]["x"] = f["cg_offset_mm"]["x"];
+          a["cg_offset_sigma_mm"]["x"] = f["cg_offset_sigma_mm"]["x"];
+        }
+      }
       widen(a["net_buoyancy_kg"], a["net_buoyancy_sigma_kg"], m["net_buoyancy_kg"], m["net_buoyancy_sigma_kg"]);
       if (m.contains("cg_offset_mm") && a.contains("cg_offset_mm") && a["cg_offset_mm"].is_object() &&
           a.contains("cg_offset_sigma_mm") && a["cg_offset_sigma_mm"].is_object())

@@ -23,6 +23,16 @@ PlanEstimate planEstimate(const analysis::AnalysisReport& analysis, const ModelC
     for (const auto& id : accepted_terms) any = any || m.id == id;
   const bool replay_only = !any && !analysis.net_buoyancy_kg.known;
   if ((!any && !replay_only) || !usable(check->net_buoyancy_kg, check->net_buoyancy_sigma_kg)) return out;
+  // An accepted pitch sensor bias: the analysis side is the log's analysis
+  // with the bias taken out and its sigma carried, not the one that read
+  // the biased pitch as true (held_law_retest.h).
+  const auto& free = check->analysis_without_pitch_bias;
+  if (free && std::find(accepted_terms.begin(), accepted_terms.end(), "pitch_sensor_bias") != accepted_terms.end() &&
+      usable(free->net_buoyancy_kg, free->net_buoyancy_sigma_kg)) {
+    out.report.net_buoyancy_kg = {true, free->net_buoyancy_kg, free->net_buoyancy_sigma_kg, {}};
+    if (free->has_cg_x && usable(free->cg_x_mm, free->cg_x_sigma_mm))
+      out.report.cg_x_mm = {true, free->cg_x_mm, free->cg_x_sigma_mm, {}};
+  }
   const auto adopt = [](analysis::EstimatedValue& into, double value, double sigma) {
     const double s = into.known && usable(into.value, into.sigma) ? adoptedSigma(into.value, into.sigma, value, sigma) : sigma;
     into = {true, value, s, ""};

@@ -40,7 +40,7 @@ void ModelCheckJob::start(std::shared_ptr<const MissionLog> log, VehicleProfile 
       out.model = model;
       out.description = model->description();
       out.result = discrepancy::runModelCheck(*model, options);
-      if (analysis) discrepancy::retestHeldLawsWithFoundPitchBias(*log, vehicle, *analysis, *out.result);
+      if (analysis) discrepancy::followFoundPitchBias(*log, vehicle, *analysis, *out.result);
       out.overlay = discrepancy::simulationOverlay(*model, *out.result, *log);
       out.ok = true;
     } catch (const std::exception& e) {

@@ -56,6 +56,36 @@ TEST(PlanEstimate, AnAgreeingCheckKeepsAtLeastTheAnalysissSigma) {
   EXPECT_NEAR(adoptedSigma(5.27, 0.158, 6.463, 0.113), std::hypot(0.158, 1.193), 1e-12);
 }
 
+// An accepted pitch sensor bias: the analysis side of the rule is the
+// log's analysis without the bias (5.56 +- 2.0 kg, truth 5501's numbers),
+// not the one that read the biased pitch as true (4.19 +- 0.38); the same
+// rule in the report the CLI writes.
+TEST(PlanEstimate, AnAcceptedPitchBiasWidensAgainstTheAnalysisWithoutIt) {
+  analysis::AnalysisReport a = analysisReport();
+  a.net_buoyancy_kg = {true, 4.19, 0.38, ""};
+  ModelCheckResult c = check();
+  c.missing_physics.front().id = "pitch_sensor_bias";
+  c.net_buoyancy_kg = 4.67;
+  c.net_buoyancy_sigma_kg = 0.70;
+  c.analysis_without_pitch_bias = ModelCheckResult::BiasFreeAnalysis{0.86, 0.28, 5.56, 2.0, true, 0.3, 0.5};
+  const PlanEstimate e = planEstimate(a, &c, {"pitch_sensor_bias"});
+  EXPECT_DOUBLE_EQ(e.report.net_buoyancy_kg.value, 4.67);
+  EXPECT_NEAR(e.report.net_buoyancy_kg.sigma, std::hypot(2.0, 5.56 - 4.67), 1e-12);
+  EXPECT_NEAR(e.report.cg_x_mm.sigma, std::hypot(0.5, 0.3 - 0.07), 1e-12);
+  // Not accepted: the check's extra analysis plays no part.
+  c.missing_physics.push_back(c.missing_physics.front());
+  c.missing_physics.back().id = "quadratic_pitch_damping";
+  EXPECT_NEAR(planEstimate(a, &c, {"quadratic_pitch_damping"}).report.net_buoyancy_kg.sigma, std::hypot(0.70, 4.67 - 4.19), 1e-12);
+  c.missing_physics.pop_back();
+
+  nlohmann::json j = analysis::toJson(a);
+  mergeIntoAnalysisJson(j, c, true);
+  EXPECT_DOUBLE_EQ(j["net_buoyancy_kg"].get<double>(), 4.67);
+  EXPECT_NEAR(j["net_buoyancy_sigma_kg"].get<double>(), std::hypot(2.0, 5.56 - 4.67), 1e-12);
+  EXPECT_DOUBLE_EQ(j["model_check"]["analysis_without_pitch_bias"]["net_buoyancy_kg"].get<double>(), 5.56);
+  EXPECT_DOUBLE_EQ(j["model_check"]["analysis_estimate"]["net_buoyancy_kg"].get<double>(), 4.19);
+}
+
 TEST(PlanEstimate, WithoutAnAcceptedTermOfThisCheckTheAnalysisStands) {
   const ModelCheckResult c = check();
   for (const std::vector<std::string>& accepted :
