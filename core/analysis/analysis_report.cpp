@@ -49,6 +49,12 @@ std::string pm(const MeanEstimate& m, const char* f, const char* unit) {
 
 }  // namespace
 
+const CalibrationParameter* calibrationParameter(const AnalysisReport& r, std::string_view id) {
+  for (const CalibrationParameter& c : r.calibration)
+    if (c.id == id) return &c;
+  return nullptr;
+}
+
 nlohmann::json toJson(const AnalysisReport& r) {
   nlohmann::json j;
   j["vehicle"] = r.vehicle_id;

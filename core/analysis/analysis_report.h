@@ -10,6 +10,7 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "analysis/auv_trim_estimation.h"
@@ -103,5 +104,8 @@ struct AnalysisReport {
 
 nlohmann::json toJson(const AnalysisReport& r);
 std::string toText(const AnalysisReport& r);
+
+// The calibration parameter `id` of the report; null when it has none.
+const CalibrationParameter* calibrationParameter(const AnalysisReport& r, std::string_view id);
 
 }  // namespace auv::analysis

@@ -11,15 +11,9 @@
 namespace auv::discrepancy {
 namespace {
 
-const analysis::CalibrationParameter* parameter(const analysis::AnalysisReport& r, const std::string& id) {
-  for (const auto& c : r.calibration)
-    if (c.id == id) return &c;
-  return nullptr;
-}
-
 bool isHeldLaw(const MissingPhysics& m, const analysis::AnalysisReport& r) {
   if (m.id != "hull_compressibility" && m.id != "thermal_expansion" && m.id != "mass_drift") return false;
-  const analysis::CalibrationParameter* p = parameter(r, m.id);
+  const analysis::CalibrationParameter* p = analysis::calibrationParameter(r, m.id);
   return p && p->used;
 }
 
@@ -64,7 +58,7 @@ void followFoundPitchBias(const MissionLog& log, const VehicleProfile& v, const 
   }
   std::vector<MissingPhysics> kept;
   for (const MissingPhysics& m : found) {
-    const analysis::CalibrationParameter* p = isHeldLaw(m, analysis) ? parameter(again, m.id) : nullptr;
+    const analysis::CalibrationParameter* p = isHeldLaw(m, analysis) ? analysis::calibrationParameter(again, m.id) : nullptr;
     if (!p || p->used) {
       kept.push_back(m);
       continue;

@@ -22,22 +22,28 @@ std::string tmp(const std::string& name) { return ::testing::TempDir() + std::to
 
 nlohmann::json readJson(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
 
-TEST(ModelCheckCli, AcceptWritesAWholeVehicleThatAnalyzeUses) {
-  const std::string plan = tmp("plan.json"), log = tmp("log.csv"), profile = tmp("hugin.model-check.json");
-  // Four 400 s legs at three propeller speeds and four depths.
-  std::ofstream(plan) << R"({
+// A HUGIN mission plan in the two-layer water with the standard pieces:
+// `legs` and `options` as JSON text.
+std::string huginPlan(const std::string& legs, const std::string& options) {
+  return R"({
   "format": "auvballast-mission-plan", "version": 1, "vehicle": "hugin1000",
   "water": { "cast": [ { "depth_m": 0, "temperature_degC": 9, "salinity_psu": 34 },
                        { "depth_m": 100, "temperature_degC": 7, "salinity_psu": 35 } ], "max_depth_m": 150 },
   "installed_kg": [7.2, 7.2, 25.2, 25.2],
   "initial": { "depth_m": 30, "speed_mps": 2.0 },
-  "legs": [ { "type": "depth", "depth_m": 30, "prop_demand": 130, "duration_s": 400 },
+  "legs": )" + legs + R"(,
+  "options": )" + options + "\n}";
+}
+
+TEST(ModelCheckCli, AcceptWritesAWholeVehicleThatAnalyzeUses) {
+  const std::string plan = tmp("plan.json"), log = tmp("log.csv"), profile = tmp("hugin.model-check.json");
+  // Four 400 s legs at three propeller speeds and four depths.
+  std::ofstream(plan) << huginPlan(R"([ { "type": "depth", "depth_m": 30, "prop_demand": 130, "duration_s": 400 },
             { "type": "depth", "depth_m": 50, "prop_demand": 160, "duration_s": 400 },
             { "type": "depth", "depth_m": 40, "prop_demand": 190, "duration_s": 400 },
-            { "type": "depth", "depth_m": 60, "prop_demand": 160, "duration_s": 400 } ],
-  "options": { "trace_interval_s": 1.0, "seed": 5,
-               "noise": { "depth_m": 0.02, "pitch_deg": 0.05, "roll_deg": 0.05, "speed_mps": 0.01 } }
-})";
+            { "type": "depth", "depth_m": 60, "prop_demand": 160, "duration_s": 400 } ])",
+                                   R"({ "trace_interval_s": 1.0, "seed": 5,
+               "noise": { "depth_m": 0.02, "pitch_deg": 0.05, "roll_deg": 0.05, "speed_mps": 0.01 } })");
   ASSERT_EQ(runCli("simulate --vehicle hugin1000 --plan " + plan + " --out " + log).code, 0);
   const std::string installed = " --installed 7.2,7.2,25.2,25.2";
   const auto r = runCli("model-check --vehicle hugin1000 --log " + log + installed + " --accept --out-profile " + profile +
@@ -221,23 +227,14 @@ TEST(ModelCheckCli, ThrustersInEverySteadySegmentLeaveTheEstimateToTheCheck) {
   EXPECT_NEAR(pj["estimate"]["net_buoyancy_kg"].get<double>(), mc["net_buoyancy_kg"].get<double>(), 1e-6) << p.out.substr(0, 600);
 }
 
-}  // namespace
-
 // model-check --bg-mm gives the check's analysis the BG of a roll test, as
 // 'analyze --bg-mm' does (with BG free a pitch sensor bias cannot be told
 // from the ballast state); a BG that is not a positive length is refused.
 TEST(ModelCheckCli, BgFromARollTestReachesTheChecksAnalysis) {
   const std::string plan = tmp("bg_plan.json"), log = tmp("bg_log.csv"), out = tmp("bg_mc.json");
-  std::ofstream(plan) << R"({
-  "format": "auvballast-mission-plan", "version": 1, "vehicle": "hugin1000",
-  "water": { "cast": [ { "depth_m": 0, "temperature_degC": 9, "salinity_psu": 34 },
-                       { "depth_m": 100, "temperature_degC": 7, "salinity_psu": 35 } ], "max_depth_m": 150 },
-  "installed_kg": [7.2, 7.2, 25.2, 25.2],
-  "initial": { "depth_m": 30, "speed_mps": 2.0 },
-  "legs": [ { "type": "depth", "depth_m": 30, "prop_demand": 130, "duration_s": 400 },
-            { "type": "depth", "depth_m": 50, "prop_demand": 180, "duration_s": 400 } ],
-  "options": { "trace_interval_s": 1.0, "seed": 7 }
-})";
+  std::ofstream(plan) << huginPlan(R"([ { "type": "depth", "depth_m": 30, "prop_demand": 130, "duration_s": 400 },
+            { "type": "depth", "depth_m": 50, "prop_demand": 180, "duration_s": 400 } ])",
+                                   R"({ "trace_interval_s": 1.0, "seed": 7 })");
   ASSERT_EQ(runCli("simulate --vehicle hugin1000 --plan " + plan + " --out " + log).code, 0);
   const std::string base = "model-check --vehicle hugin1000 --log " + log + " --installed 7.2,7.2,25.2,25.2";
   const auto r = runCli(base + " --bg-mm 23.5 --json " + out);
@@ -250,3 +247,5 @@ TEST(ModelCheckCli, BgFromARollTestReachesTheChecksAnalysis) {
   EXPECT_NE(bad.err.find("bg-mm"), std::string::npos) << bad.err;
   EXPECT_NE(bad.err.find("must be positive"), std::string::npos) << bad.err;
 }
+
+}  // namespace

@@ -24,10 +24,13 @@
 namespace auv::identification {
 namespace {
 
-const analysis::CalibrationParameter* parameter(const analysis::AnalysisReport& rep, const char* id) {
-  for (const auto& c : rep.calibration)
-    if (c.id == id) return &c;
-  return nullptr;
+// The analysis options the harness analysed its first log with: its pieces
+// and the BG of the roll test (held in the report's calibration).
+analysis::AnalysisOptions harnessOptions(const analysis::AnalysisReport& rep) {
+  analysis::AnalysisOptions a;
+  a.installed_kg = {7.2, 7.2, 25.2, 25.2};
+  a.bg_m = analysis::calibrationParameter(rep, "bg")->value;
+  return a;
 }
 
 TEST(AttitudeSensorBias, TheReadingLessTheBiasAndTheCommandsAsLogged) {
@@ -67,21 +70,19 @@ TEST(AttitudeSensorBias, AnAcceptedPitchBiasGivesTheBallastStateOfTheTrueAttitud
     ++called;
     ASSERT_TRUE(rep.net_buoyancy_kg.known);
     EXPECT_GT(std::abs(rep.net_buoyancy_kg.value - net_truth), 3.0 * rep.net_buoyancy_kg.sigma);  // the bias, read as true
-    const analysis::CalibrationParameter* law = parameter(rep, "thermal_expansion");
+    const analysis::CalibrationParameter* law = analysis::calibrationParameter(rep, "thermal_expansion");
     ASSERT_NE(law, nullptr);
     EXPECT_TRUE(law->used);
 
     VehicleProfile accepted = h.profile();
     accepted.sections["model_check"]["terms"]["pitch_sensor_bias"] = 1.0;
-    analysis::AnalysisOptions a;
-    a.installed_kg = {7.2, 7.2, 25.2, 25.2};
-    a.bg_m = parameter(rep, "bg")->value;
+    const analysis::AnalysisOptions a = harnessOptions(rep);
     const analysis::AnalysisReport fixed = analysis::analyzeMission(log, accepted, a);
     ASSERT_TRUE(fixed.net_buoyancy_kg.known);
     EXPECT_LE(std::abs(fixed.net_buoyancy_kg.value - net_truth), 2.0 * fixed.net_buoyancy_kg.sigma)
         << fixed.net_buoyancy_kg.value << " +- " << fixed.net_buoyancy_kg.sigma << " truth " << net_truth;
     EXPECT_LT(fixed.net_buoyancy_kg.sigma, rep.net_buoyancy_kg.sigma);
-    for (const char* id : {"hull_compressibility", "thermal_expansion", "mass_drift"}) EXPECT_FALSE(parameter(fixed, id)->used) << id;
+    for (const char* id : {"hull_compressibility", "thermal_expansion", "mass_drift"}) EXPECT_FALSE(analysis::calibrationParameter(fixed, id)->used) << id;
     ASSERT_FALSE(fixed.notes.empty());
     EXPECT_EQ(fixed.notes.front().id(), "analysis.attitude_bias_removed");
     EXPECT_EQ(fixed.notes.front().args().front(), "+1.00");
@@ -99,9 +100,7 @@ TEST(AttitudeSensorBias, TheAcceptedBiasesSigmaIsInTheBallastStatesSigma) {
   Harness h;
   h.concealed.pitch_bias_deg = 1.0;
   h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double) {
-    analysis::AnalysisOptions a;
-    a.installed_kg = {7.2, 7.2, 25.2, 25.2};
-    a.bg_m = parameter(rep, "bg")->value;
+    const analysis::AnalysisOptions a = harnessOptions(rep);
     VehicleProfile accepted = h.profile();
     accepted.sections["model_check"]["terms"]["pitch_sensor_bias"] = 0.86;
     const analysis::AnalysisReport exact = analysis::analyzeMission(log, accepted, a);

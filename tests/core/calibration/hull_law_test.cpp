@@ -28,13 +28,6 @@
 namespace auv::identification {
 namespace {
 
-const analysis::CalibrationParameter* parameter(const analysis::AnalysisReport& rep, const char* id) {
-  for (const auto& c : rep.calibration)
-    if (c.id == id) return &c;
-  return nullptr;
-}
-
-
 // The levers are the derivatives of the buoyancy change from the reference
 // water with respect to the hull law's constants: central differences of
 // HullModel::volumeAt as the oracle.
@@ -82,7 +75,7 @@ TEST(HullLaw, AThermalExpansionTheProfileLacksIsNamedFromTheLegMeans) {
   checkFirstLogWithItsAnalysis(
       5305,
       [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double, const Harness& h) {
-    const analysis::CalibrationParameter* a = parameter(rep, "thermal_expansion");
+    const analysis::CalibrationParameter* a = analysis::calibrationParameter(rep, "thermal_expansion");
     ASSERT_NE(a, nullptr);
     EXPECT_TRUE(a->used);
     EXPECT_DOUBLE_EQ(a->profile_value, 0.0);
@@ -90,7 +83,7 @@ TEST(HullLaw, AThermalExpansionTheProfileLacksIsNamedFromTheLegMeans) {
     EXPECT_LT(a->sigma, 3e-5);
     // The one law: the compressibility the three would have split it with
     // stays the profile's (auv_calibration.cpp, explainingLaw).
-    const analysis::CalibrationParameter* kappa = parameter(rep, "hull_compressibility");
+    const analysis::CalibrationParameter* kappa = analysis::calibrationParameter(rep, "hull_compressibility");
     ASSERT_NE(kappa, nullptr);
     EXPECT_FALSE(kappa->used);
     ASSERT_FALSE(r.missing_physics.empty());
@@ -168,7 +161,7 @@ TEST(HullLaw, AMassDriftIsNamedFromTheLegMeansNotAsAHullLaw) {
   checkFirstLogWithItsAnalysis(
       5400,
       [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double, const Harness&) {
-    const analysis::CalibrationParameter* a = parameter(rep, "mass_drift");
+    const analysis::CalibrationParameter* a = analysis::calibrationParameter(rep, "mass_drift");
     ASSERT_NE(a, nullptr);
     EXPECT_TRUE(a->used);
     EXPECT_LE(std::abs(a->value - 0.15), 2.0 * a->sigma);
@@ -191,7 +184,7 @@ TEST(HullLaw, TheProfilesLawIsKeptWhereTheLogAgrees) {
       [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double, const Harness&) {
     for (const char* id : {"hull_compressibility", "thermal_expansion", "mass_drift"}) {
       SCOPED_TRACE(id);
-      const analysis::CalibrationParameter* a = parameter(rep, id);
+      const analysis::CalibrationParameter* a = analysis::calibrationParameter(rep, id);
       ASSERT_NE(a, nullptr);
       EXPECT_FALSE(a->used);
       EXPECT_LE(std::abs(a->value - a->profile_value), 2.0 * a->sigma);
@@ -217,11 +210,11 @@ TEST(HullLaw, APitchSensorBiasIsNotTakenForAHullLaw) {
       5500,
       [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double, const Harness&) {
     for (const char* id : {"hull_compressibility", "thermal_expansion", "mass_drift"}) {
-      const analysis::CalibrationParameter* a = parameter(rep, id);
+      const analysis::CalibrationParameter* a = analysis::calibrationParameter(rep, id);
       ASSERT_NE(a, nullptr) << id;
       EXPECT_FALSE(a->used) << id;
     }
-    const analysis::CalibrationParameter* cf = parameter(rep, "crossflow_scale");
+    const analysis::CalibrationParameter* cf = analysis::calibrationParameter(rep, "crossflow_scale");
     ASSERT_NE(cf, nullptr);
     EXPECT_GT(std::abs(cf->value - cf->prior_value), 3.0 * cf->prior_sigma);  // what the bias did to it
     bool warned = false;
@@ -262,7 +255,7 @@ TEST(HullLaw, ALawTheLegsCannotTellFromAnotherNamesItsRival) {
       [](const discrepancy::ModelCheckResult& r, const analysis::AnalysisReport& rep, double, const Harness&) {
     const analysis::CalibrationParameter* used = nullptr;
     for (const char* id : {"hull_compressibility", "thermal_expansion", "mass_drift"}) {
-      const analysis::CalibrationParameter* q = parameter(rep, id);
+      const analysis::CalibrationParameter* q = analysis::calibrationParameter(rep, id);
       ASSERT_NE(q, nullptr);
       if (q->used) {
         EXPECT_EQ(used, nullptr) << "one law, not " << used->id << " and " << id;
