@@ -127,9 +127,9 @@ int main(int argc, char** argv) {
         std::printf("      calibration:%s\n", cal.c_str());
         std::string law;
         for (const analysis::CalibrationParameter& q : rep.calibration)
-          if (q.id == "hull_compressibility" || q.id == "thermal_expansion" || q.id == "mass_drift")
+          if (q.id == "hull_compressibility" || q.id == "thermal_expansion" || q.id == "mass_drift" || q.id == "pitch_sensor_bias")
             law += " " + q.id + (q.used ? "" : "(unused)") + "=" + std::to_string(q.value) + "+-" + std::to_string(q.sigma);
-        std::printf("      analysis buoyancy laws:%s\n", law.c_str());
+        std::printf("      analysis buoyancy laws and pitch sensor bias:%s\n", law.c_str());
         if (rep.calibration.empty()) {
           std::string why;
           for (const Message& w : rep.warnings) why += " [" + w.text() + "]";

@@ -15,7 +15,9 @@
 // log's analysis as the CLI and the wizard run it: the terms it names there
 // are false, and how often its own ballast fit and the one the
 // plan adopts with all its terms accepted (planEstimate) cover the truth;
-// --pitch-bias DEG: every mission's pitch sensor reads DEG too high, as in
+// --pitch-alignment-sigma DEG: the analysis's prior on the sensor's bias
+// (default 1; 0 = the pitch read as true). --pitch-bias DEG: every
+// mission's pitch sensor reads DEG too high, as in
 // hugin_concealed_bench's pitch-bias case; --dump SEED PREFIX writes one
 // truth's logs and first report for the CLI and the wizard)
 #include <algorithm>
@@ -145,7 +147,7 @@ int main(int argc, char** argv) {
   int truths = 50;
   std::uint64_t seed = 1100;
   bool loop = true, timing = true, verbose = false, fly_manoeuvre = false;
-  double log_interval_s = 1.0, pitch_bias_deg = 0.0;
+  double log_interval_s = 1.0, pitch_bias_deg = 0.0, alignment_sigma_deg = 1.0;
   bool transients = false;
   int model_checks = 0;
   for (int i = 1; i < argc; ++i) {
@@ -159,6 +161,7 @@ int main(int argc, char** argv) {
     else if (a == "--log-interval" && i + 1 < argc) log_interval_s = std::atof(argv[++i]);
     else if (a == "--transients") transients = true;
     else if (a == "--pitch-bias" && i + 1 < argc) pitch_bias_deg = std::atof(argv[++i]);  // a concealed sensor bias
+    else if (a == "--pitch-alignment-sigma" && i + 1 < argc) alignment_sigma_deg = std::atof(argv[++i]);  // 0: read as true
     else if (a == "--model-check" && i + 1 < argc) model_checks = std::atoi(argv[++i]);
     else if (a == "--truth-doc" && i + 2 < argc) {  // --truth-doc SEED FILE: the truth's hydrodynamics companion
       const nlohmann::json nominal = JsonReader::parseFile(std::string(AUV_RESOURCE_DIR) + "/sim/hugin1000_hydrodynamics.json");
@@ -166,9 +169,10 @@ int main(int argc, char** argv) {
       return 0;
     }
     else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: logs and reports of one truth (first; -2: second, joint)
-      // The flags given before it apply (--fly-manoeuvre, --log-interval, --transients, --pitch-bias).
+      // The flags given before it apply (--fly-manoeuvre, --log-interval, --transients, --pitch-bias, --pitch-alignment-sigma).
       identification::Harness h;
       h.concealed.pitch_bias_deg = pitch_bias_deg;
+      h.pitch_alignment_sigma_deg = alignment_sigma_deg;
       h.log_interval_s = log_interval_s;
       h.use_transients = transients;
       h.fly_manoeuvre = fly_manoeuvre;
@@ -177,7 +181,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     else {
-      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre] [--pitch-bias DEG] [--model-check N] [--dump SEED PREFIX]\n");
+      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre] [--pitch-bias DEG] [--pitch-alignment-sigma DEG] [--model-check N] [--dump SEED PREFIX]\n");
       return 2;
     }
   }
@@ -186,6 +190,7 @@ int main(int argc, char** argv) {
   h.use_transients = transients;
   h.fly_manoeuvre = fly_manoeuvre;
   h.concealed.pitch_bias_deg = pitch_bias_deg;
+  h.pitch_alignment_sigma_deg = alignment_sigma_deg;
   std::vector<double> en, ex, ey, en2, ex2, zn, zx;  // zn, zx: |error| / sigma
   int flagged = 0, light = 0, heavy = 0, porpoise = 0, flagged_miss2 = 0, clean = 0, clean_spec2 = 0;
   std::vector<double> droll1, dpitch1;  // |flown after one move - the plan's prediction|
@@ -212,7 +217,7 @@ int main(int argc, char** argv) {
                               ") | one move: net " +
                               std::to_string(r.one.net_op_kg) + " (min " + std::to_string(r.one.min_net_kg) + ") pitch " +
                               std::to_string(r.one.pitch_deg) + " roll " + std::to_string(r.one.roll_deg) +
-                              (r.one.spec ? " SPEC" : " miss") + " | two: net " + std::to_string(r.two.net_op_kg) +
+                              (r.one.spec ? " SPEC" : " miss") + " | two: net " + std::to_string(r.two.net_op_kg) + " (min " + std::to_string(r.two.min_net_kg) + ")" +
                               " pitch " + std::to_string(r.two.pitch_deg) + " roll " + std::to_string(r.two.roll_deg) +
                               " (planned net " + std::to_string(r.two.planned_net_kg) + " roll " + std::to_string(r.two.planned_roll_deg) +
                               ", kit best " + std::to_string(r.two.kit_best_roll_deg) + ")" + (r.two.spec ? " SPEC" : " miss") + " | joint net err " + std::to_string(r.net2_err_kg) +

@@ -24,7 +24,7 @@ namespace {
 
 struct AnalyzeOpts {
   std::vector<std::string> log;
-  std::string cache_dir, vehicle, installed, bg_mm, coefficient_sigma, json;
+  std::string cache_dir, vehicle, installed, bg_mm, coefficient_sigma, pitch_alignment_sigma, json;
   TargetFlags target;
   bool no_classic = false;
   bool transients = false;
@@ -48,6 +48,14 @@ int runAnalyze(const AnalyzeOpts& o) {
     if (!(r >= 0.0 && r <= 1.0))
       throw InputError("coefficient-sigma", "must be a fraction between 0 and 1", "e.g. --coefficient-sigma 0.02 for derivatives known to 2 %");
     a.coefficient_rel_sigma = r;
+  }
+  if (!o.pitch_alignment_sigma.empty()) {
+    const double s = parseNumber(o.pitch_alignment_sigma, "pitch-alignment-sigma-deg",
+                                 "the 1-sigma uncertainty of the pitch sensor's alignment, deg");
+    if (!(s >= 0.0 && s <= 5.0))
+      throw InputError("pitch-alignment-sigma-deg", "must be between 0 and 5 deg",
+                       "e.g. --pitch-alignment-sigma-deg 0.1 after a level check on the dock, 0 to read the pitch as true");
+    a.pitch_alignment_sigma_deg = s;
   }
   a.classic = !o.no_classic;
   a.use_transients = o.transients;
@@ -106,6 +114,9 @@ Command addAnalyzeCommand(CLI::App& app) {
   cmd->add_option("--coefficient-sigma", o->coefficient_sigma,
                   "AUVs: prior 1-sigma of each group of the profile's hydrodynamic derivatives in the calibration "
                   "(default 0.30 with the Munk structure unknown; 0.02 once known, e.g. from a tow tank)");
+  cmd->add_option("--pitch-alignment-sigma-deg", o->pitch_alignment_sigma,
+                  "AUVs: prior 1-sigma of the pitch sensor's bias, which the calibration finds beside the ballast "
+                  "state (calibration id pitch_sensor_bias; default 1 deg; 0 = the sensor is aligned)");
   cmd->add_flag("--no-classic", o->no_classic, "Skip the thesis's App. D checks (reported under details.classic)");
   cmd->add_flag("--transients", o->transients,
                 "AUVs: also fit the depth-step and propeller-speed transients through the simulator, jointly with "

@@ -37,6 +37,11 @@ inline constexpr MessageFormat kAttitudeBiasRemoved{
     "analysis.attitude_bias_removed",
     "the logged pitch and roll were corrected by the attitude sensor biases the profile holds (accepted from a model "
     "check): pitch %1 +- %2 deg, roll %3 +- %4 deg (reading minus true); their sigmas are in the ballast state's"};
+inline constexpr MessageFormat kPitchSensorBiasFound{
+    "analysis.pitch_sensor_bias_found",
+    "the legs fit one steady balance only with the pitch sensor reading %1 +- %2 deg more than the vehicle's pitch "
+    "(reading minus true; its prior 0 +- %3 deg): the net buoyancy, CG and predicted flight pitch are of the true "
+    "attitude, the logged pitch is not. Align the sensor, or keep the bias with 'model-check --accept'"};
 inline constexpr MessageFormat kPitchBasisGlide{"analysis.pitch_basis_glide",
                                                 "measured - commanded, during glides whose command has the phase's sign"};
 inline constexpr MessageFormat kPitchBasisLevel{"analysis.pitch_basis_level", "measured - commanded, in steady level flight"};
@@ -166,7 +171,7 @@ inline constexpr MessageFormat kTrimmedCruise{
 
 // Every analysis message, for completeness checks of the translations.
 inline constexpr const MessageFormat* kAll[] = {
-    &kNoSteadyGlide, &kNoSteadyLevel, &kWindowExcluded, &kAveragedLegs, &kDepthNotHeldLight, &kDepthNotHeldHeavy, &kPorpoising, &kPitchBasisGlide, &kPitchBasisLevel, &kPitchBasisNoCommand,
+    &kNoSteadyGlide, &kNoSteadyLevel, &kWindowExcluded, &kAveragedLegs, &kDepthNotHeldLight, &kDepthNotHeldHeavy, &kPorpoising, &kPitchSensorBiasFound, &kPitchBasisGlide, &kPitchBasisLevel, &kPitchBasisNoCommand,
     &kNoDepthCommand, &kCtdOutOfRange, &kNoDensity, &kGliderCgX, &kGliderCgY, &kNoPumpVolume, &kNoPitch, &kNoSteadyDiveOrClimb, &kFewGlideSamples,
     &kLogMassDiffers, &kGliderFitNotConverged, &kGliderDefaultConstants, &kGliderDefaultCompressibility,
     &kNoRollSamples, &kNoPropRpm, &kOneCruiseRpm, &kCgYNeedsBg, &kNoSteadyLevelSegment, &kNoSpeed, &kNoSpeedAndPitch,

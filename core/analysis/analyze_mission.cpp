@@ -50,6 +50,12 @@ AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, co
   if (!corrected) return detail::analyzeRecordedLog(log, v, o);
   AnalysisReport rep = detail::analyzeRecordedLog(*corrected, v, o);
   carryBiasSigma(log, v, o, bias, rep);
+  // What the legs still show is on top of the accepted bias: report the sensor's whole bias.
+  for (CalibrationParameter& q : rep.calibration)
+    if (q.id == "pitch_sensor_bias") {
+      q.value += bias.pitch_deg;
+      q.prior_value = q.profile_value = bias.pitch_deg;
+    }
   rep.notes.insert(rep.notes.begin(),
                    Message(msg::kAttitudeBiasRemoved, {text("%+.2f", bias.pitch_deg), text("%.2f", bias.pitch_sigma_deg),
                                                       text("%+.2f", bias.roll_deg), text("%.2f", bias.roll_sigma_deg)}));

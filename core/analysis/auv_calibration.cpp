@@ -8,6 +8,7 @@
 #include <tuple>
 #include <utility>
 
+#include "analysis/calibration_segments.h"
 #include "analysis/steady_solution.h"
 #include "common/units.h"
 
@@ -262,9 +263,22 @@ bool steadyPosterior(const SteadyHydroCoefficients& c, double W, double rho_ref,
 // (hugin_concealed_bench: a 1 degree bias made thermal expansions of
 // 1.6-2.9e-4 1/degC at 5 sigma). A law is the log's only when it stands
 // with that bias free.
-double lawChi2WithPitchBias(const SteadyHydroCoefficients& c, double W, double rho_ref,
-                            const std::vector<CalibrationSegment>& segs, const Priors& pr, const Eigen::VectorXd& p,
-                            double sigma_rad, double inflation) {
+// A reported angle (deg) outside the parameter vector, prior 0 +- prior_sigma.
+CalibrationParameter derivedParameter(const char* id, double value, double sigma, double prior_sigma) {
+  CalibrationParameter q;
+  q.id = id;
+  q.unit = "deg";
+  q.value = value;
+  q.sigma = sigma;
+  q.prior_sigma = prior_sigma;
+  q.identified = q.sigma < 0.5 * q.prior_sigma;
+  return q;
+}
+
+// Each segment's residual lever of a pitch sensor bias at the parameters p:
+// the residual moves by -dr/dtheta per radian of bias.
+std::vector<Eigen::Vector2d> pitchBiasLevers(const SteadyHydroCoefficients& c, double W, double rho_ref,
+                                             const std::vector<CalibrationSegment>& segs, const Eigen::VectorXd& p) {
   constexpr double h = 1e-4;  // rad
   std::vector<Eigen::Vector2d> lever;
   Eigen::Matrix<double, 2, kCalibrationCount> A;
@@ -274,28 +288,67 @@ double lawChi2WithPitchBias(const SteadyHydroCoefficients& c, double W, double r
     hi[kPitch] += h;
     lo[kPitch] -= h;
     rowsOf(c, W, rho_ref, s, hi, A, b_hi, true);
-    const Eigen::Vector2d r_hi = A * p - b_hi;
+    const Eigen::Vector2d r_hi = A * p.head(kCalibrationCount) - b_hi;
     rowsOf(c, W, rho_ref, s, lo, A, b_lo, true);
-    const Eigen::Vector2d r_lo = A * p - b_lo;
-    lever.push_back(-(r_hi - r_lo) / (2 * h));  // the residual moves by -dr/dtheta per radian of bias
+    const Eigen::Vector2d r_lo = A * p.head(kCalibrationCount) - b_lo;
+    lever.push_back(-(r_hi - r_lo) / (2 * h));
   }
+  return lever;
+}
+
+// pr with a pitch sensor bias (prior 0 +- sigma_rad) appended.
+Priors withPitchBias(const Priors& pr, double sigma_rad) {
   Priors aug;
   aug.mean = Eigen::VectorXd::Zero(kCalibrationCount + 1);
   aug.sigma = Eigen::VectorXd::Zero(kCalibrationCount + 1);
   aug.mean.head(kCalibrationCount) = pr.mean;
   aug.sigma.head(kCalibrationCount) = pr.sigma;
   aug.sigma(kCalibrationCount) = sigma_rad;
-  Eigen::VectorXd p0 = Eigen::VectorXd::Zero(kCalibrationCount + 1);
-  p0.head(kCalibrationCount) = pr.mean;
-  const Solved s = solve(c, W, rho_ref, segs, aug, p0, &lever);
-  if (!s.ok) return 0.0;
+  return aug;
+}
+
+// The posterior information of s with its data rows' variance scaled by inflation.
+Eigen::MatrixXd informationOf(const Solved& s, const Priors& pr, double inflation) {
   Eigen::MatrixXd info = s.data_info / inflation;
-  for (Eigen::Index k = 0; k < aug.sigma.size(); ++k)
-    if (aug.sigma(k) > 0) info(k, k) += 1.0 / (aug.sigma(k) * aug.sigma(k));
-  const Eigen::MatrixXd cov = info.inverse();
+  for (Eigen::Index k = 0; k < pr.sigma.size(); ++k)
+    if (pr.sigma(k) > 0) info(k, k) += 1.0 / (pr.sigma(k) * pr.sigma(k));
+  return info;
+}
+
+double lawChi2WithPitchBias(const SteadyHydroCoefficients& c, double W, double rho_ref,
+                            const std::vector<CalibrationSegment>& segs, const Priors& pr, const Eigen::VectorXd& p,
+                            double sigma_rad, double inflation) {
+  const std::vector<Eigen::Vector2d> lever = pitchBiasLevers(c, W, rho_ref, segs, p);
+  const Priors aug = withPitchBias(pr, sigma_rad);
+  const Solved s = solve(c, W, rho_ref, segs, aug, aug.mean, &lever);
+  if (!s.ok) return 0.0;
+  const Eigen::MatrixXd cov = informationOf(s, aug, inflation).inverse();
   constexpr int nLaw = kCalibrationCount - kCompressibility;
   const Eigen::VectorXd law = s.p.segment(kCompressibility, nLaw);
   return law.dot(cov.block(kCompressibility, kCompressibility, nLaw, nLaw).ldlt().solve(law));
+}
+
+// The posterior with a pitch sensor bias free beside the groups (prior 0 +-
+// sigma_rad), marginalised: out.p and out.cov keep CalibrationIndex, the
+// bias's uncertainty inside the ballast state's. The lever is taken at the
+// posterior and the solve repeated once at the new answer.
+void carryPitchBias(const SteadyHydroCoefficients& c, double W, double rho_ref,
+                    const std::vector<CalibrationSegment>& segs, const Priors& pr, double sigma_rad,
+                    double taken_out_rad, SteadyCalibration& out) {
+  Priors aug = withPitchBias(pr, sigma_rad);
+  aug.mean(kCalibrationCount) = -taken_out_rad;  // the prior is on the whole bias, 0 +- sigma
+  Eigen::VectorXd p = out.p;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::vector<Eigen::Vector2d> lever = pitchBiasLevers(c, W, rho_ref, segs, p);
+    const Solved s = solve(c, W, rho_ref, segs, aug, aug.mean, &lever);
+    if (!s.ok) return;
+    p = s.p;
+    const Eigen::MatrixXd cov = informationOf(s, aug, out.data_variance_scale).inverse();
+    out.p = s.p.head(kCalibrationCount);
+    out.cov = cov.topLeftCorner(kCalibrationCount, kCalibrationCount);
+    out.pitch_sensor_bias_deg = units::radToDeg(taken_out_rad + s.p(kCalibrationCount));
+    out.pitch_sensor_bias_sigma_deg = units::radToDeg(std::sqrt(std::max(0.0, cov(kCalibrationCount, kCalibrationCount))));
+  }
 }
 
 // The buoyancy law that alone explains the legs about as well as the three
@@ -327,12 +380,34 @@ std::pair<int, int> explainingLaw(const SteadyHydroCoefficients& c, double W, do
   return {best, rival};
 }
 
-}  // namespace
-
-double pitchMomentUw(const SteadyHydroCoefficients& c, double rho, double munk_factor) {
-  const double L = c.reference_length_m;
-  return 0.5 * rho * L * L * L * c.Mw_prime + munk_factor * (c.Xudot_kg - c.Zwdot_kg);
+// The pitch sensor bias (rad) that makes every segment, level legs and
+// glides alike, fit one steady balance best, with the buoyancy laws free
+// and the bias's prior 0 +- sigma_rad: the minimum over a grid of the
+// whole objective (data and priors), refined by a parabola.
+double mostLikelyPitchBias(const SteadyHydroCoefficients& c, double W, double rho_ref,
+                           const std::vector<CalibrationSegment>& segs, const Priors& pr, double sigma_rad) {
+  const auto objective = [&](double b) {
+    const Solved s = solve(c, W, rho_ref, withPitchLowered(segs, b), pr, pr.mean);
+    return s.ok ? (s.At * s.p - s.bt).squaredNorm() + (b / sigma_rad) * (b / sigma_rad)
+                : std::numeric_limits<double>::infinity();
+  };
+  const double step = units::degToRad(0.1);
+  const int n = static_cast<int>(std::ceil(3.0 * sigma_rad / step));
+  int best = 0;
+  double j_best = objective(0.0);
+  std::vector<double> j(static_cast<std::size_t>(2 * n + 1));
+  for (int i = -n; i <= n; ++i) {
+    j[static_cast<std::size_t>(i + n)] = i == 0 ? j_best : objective(i * step);
+    if (j[static_cast<std::size_t>(i + n)] < j_best) j_best = j[static_cast<std::size_t>(i + n)], best = i;
+  }
+  if (best == -n || best == n) return best * step;
+  const double jm = j[static_cast<std::size_t>(best + n - 1)], j0 = j[static_cast<std::size_t>(best + n)],
+               jp = j[static_cast<std::size_t>(best + n + 1)];
+  const double curv = jm - 2 * j0 + jp;
+  return (best + (curv > 0 ? 0.5 * (jm - jp) / curv : 0.0)) * step;
 }
+
+}  // namespace
 
 SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, double rho_ref,
                                   const std::vector<CalibrationSegment>& segs_in, const CalibrationPriors& cp,
@@ -365,10 +440,22 @@ SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, do
   // objective: on logs with few speeds it walked the planes' effectiveness
   // towards zero, where the elevator's noise weighs nothing
   // (docs/decisions/analysis-calibration.md).
-  const std::vector<bool> explained = glidesExplained(c, W, rho_ref, segs_in, pr);
+  // The pitch sensor's alignment, free beside the groups from the start: a
+  // biased pitch read as true moves every leg's angle of attack, and the
+  // glides it no longer fits are dropped and the laws take the rest (a 1 deg
+  // bias: heave lift scale -0.2, net buoyancy 9 kg low at 1 sigma).
+  const double bias_sigma_rad = units::degToRad(cp.pitch_alignment_sigma_deg);
+  double bias_rad = 0.0;
+  std::vector<CalibrationSegment> segs_shifted;
+  if (bias_sigma_rad > 0.0) {
+    bias_rad = mostLikelyPitchBias(c, W, rho_ref, segs_in, pr, bias_sigma_rad);
+    segs_shifted = withPitchLowered(segs_in, bias_rad);
+  }
+  const std::vector<CalibrationSegment>& segs_all = bias_sigma_rad > 0.0 ? segs_shifted : segs_in;
+  const std::vector<bool> explained = glidesExplained(c, W, rho_ref, segs_all, pr);
   std::vector<CalibrationSegment> segs;
   for (std::size_t i = 0; i < segs_in.size(); ++i)
-    if (explained[i]) segs.push_back(segs_in[i]);
+    if (explained[i]) segs.push_back(segs_all[i]);
   out.glides_dropped = segs_in.size() - segs.size();
   out.segment_kept = explained;
   Solved s;
@@ -412,6 +499,7 @@ SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, do
   if (!out.buoyancy_law_fitted) pr.sigma.segment(kCompressibility, nLaw) *= 1e-6;
   if (!out.buoyancy_law_fitted || out.single_buoyancy_law >= 0 || cp.narrow_to_scatter)
     if (!steadyPosterior(c, W, rho_ref, segs, pr, cp.narrow_to_scatter, s, prior_info, out)) return out;
+  if (bias_sigma_rad > 0.0) carryPitchBias(c, W, rho_ref, segs, pr, bias_sigma_rad, bias_rad, out);
   if (transients) detail::fitTransients(s, transients, out.data_variance_scale, prior_info, out);
   auto param = [&](const char* id, const char* unit, int k, double profile_value) {
     CalibrationParameter q;
@@ -438,14 +526,8 @@ SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, do
         out.cov(kPlaneOffset, kPlaneOffset);
     out.elevator_offset_deg = cc / se;
     out.elevator_offset_sigma_deg = std::sqrt(std::max(0.0, g.dot(S * g)));
-    CalibrationParameter q;
-    q.id = "elevator_zero_offset";
-    q.unit = "deg";
-    q.value = out.elevator_offset_deg;
-    q.sigma = out.elevator_offset_sigma_deg;
-    q.prior_sigma = cp.elevator_offset_sigma_deg;
-    q.identified = q.sigma < 0.5 * q.prior_sigma;
-    out.parameters.push_back(q);
+    out.parameters.push_back(
+        derivedParameter("elevator_zero_offset", out.elevator_offset_deg, out.elevator_offset_sigma_deg, cp.elevator_offset_sigma_deg));
   }
   param("bg", "m", kBg, cp.bg_m);
   // The buoyancy laws as the vehicle's values (the profile's plus the fitted change).
@@ -472,6 +554,9 @@ SteadyCalibration calibrateSteady(const SteadyHydroCoefficients& c, double W, do
     out.parameters.push_back(q);
   }
   if (out.transient_residuals > 0) param("pitch_damping_scale", "1", kPitchDamping, 1.0);
+  if (bias_sigma_rad > 0.0)  // the model check's id: the same physics, found here from the steady legs
+    out.parameters.push_back(derivedParameter("pitch_sensor_bias", out.pitch_sensor_bias_deg,
+                                              out.pitch_sensor_bias_sigma_deg, cp.pitch_alignment_sigma_deg));
   return out;
 }
 
@@ -489,24 +574,6 @@ Eigen::MatrixXd covarianceAfter(const SteadyHydroCoefficients& c, double W, doub
     info += A.transpose() * C.inverse() * A / cal.data_variance_scale;
   }
   return info.inverse();
-}
-
-SteadyHydroCoefficients calibratedCoefficients(const SteadyHydroCoefficients& c, double rho_ref,
-                                               const Eigen::VectorXd& p) {
-  SteadyHydroCoefficients k = c;
-  const double L = c.reference_length_m;
-  k.Zw_prime *= p(kHeave);
-  k.Zww_kg_per_m *= p(kCrossflow);
-  k.Mww_kg *= p(kCrossflow);
-  // The whole linear pitch moment as M_w' with the Munk moment inside it.
-  k.munk_factor = 0.0;
-  k.Mw_prime = p(kPitchUw) / (0.5 * rho_ref * L * L * L);
-  k.munk_stated = true;
-  if (c.has_planes) {
-    k.Z_e_per_deg *= p(kPlanes);
-    k.M_e_per_deg *= p(kPlanes);
-  }
-  return k;
 }
 
 }  // namespace auv::analysis

@@ -61,6 +61,12 @@ struct CalibrationPriors {
   // significance test only): an AHRS's mounting is rarely known to better
   // than a degree on a vehicle nobody has aligned.
   double pitch_sensor_bias_sigma_deg = 1.0;
+  // The prior on the pitch sensor's bias (reading minus true) carried as a
+  // parameter of the ballast state's posterior (0 = the sensor is aligned):
+  // the most likely bias is taken out of every segment first, then its
+  // remaining uncertainty is marginalised into net buoyancy and CG x
+  // (docs/decisions/analysis-pitch-alignment.md).
+  double pitch_alignment_sigma_deg = 1.0;
 };
 
 // One steady segment: speed, pitch rad, roll rad, elevator deg, depth rate
@@ -138,6 +144,9 @@ struct SteadyCalibration {
   // and whether it was significant and so used (else the profile's are held).
   double buoyancy_law_chi2 = 0.0;
   double buoyancy_law_chi2_with_pitch_bias = 0.0;  // the same with a pitch sensor bias free beside them
+  // The pitch sensor bias (reading minus true) carried beside the groups
+  // (CalibrationPriors::pitch_alignment_sigma_deg), deg; sigma 0 = not carried.
+  double pitch_sensor_bias_deg = 0.0, pitch_sensor_bias_sigma_deg = 0.0;
   bool buoyancy_law_fitted = false;
   // Fitted: the one law (0 compressibility, 1 thermal expansion, 2 mass
   // drift) that alone explains the legs about as well as the three; the

@@ -343,6 +343,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     pri.munk_factor = coeffs->munk_factor;
     pri.munk_sigma = pri.group_rel_sigma;
   }
+  pri.pitch_alignment_sigma_deg = ctx.pitch_alignment_sigma_deg;
   pri.bg_m = m.BG;
   pri.bg_sigma_m = ctx.bg_measured_m ? ctx.bg_measured_sigma_m : ctx.bg_profile_rel_sigma * m.BG;
   pri.compressibility_per_dbar = ctx.hull_compressibility_per_dbar;
@@ -422,6 +423,10 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
     if (conflictsWithPrior(q))
       out.warnings.push_back(Message(msg::kCalibrationPriorConflict, {q.id, fmt("%.3g", q.value), fmt("%.3g", q.prior_value),
                                                                       fmt("%.2g", q.prior_sigma)}));
+  for (const auto& q : cal.parameters)
+    if (pitchBiasFound(q))
+      out.notes.push_back(Message(msg::kPitchSensorBiasFound, {fmt("%+.2f", q.value), fmt("%.2f", q.sigma),
+                                                                fmt("%.1f", pri.pitch_alignment_sigma_deg)}));
   out.calibrated = calibratedCoefficients(*coeffs, m.rho, cal.p);
   // Per-segment values at each segment's own water, calibrated model.
   Model one = m;
@@ -430,6 +435,7 @@ AuvTrimEstimate estimateAuvTrim(std::span<const SteadySegmentMeans> segments, co
   for (std::size_t j = 0; j < meas.size(); ++j) {
     std::array<double, 5> v = meas[j].v;
     v[kElev] -= out.elevator_bias_deg;
+    v[kPitch] -= units::degToRad(cal.pitch_sensor_bias_deg);
     Eigen::MatrixXd A;
     Eigen::Vector2d b;
     one.rows(v, A, b);

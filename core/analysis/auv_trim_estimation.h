@@ -65,6 +65,7 @@ struct AuvTrimContext {
   // unknown Munk structure (0.5 +- 0.5) unless the profile states it; set
   // (--coefficient-sigma) = that width for every group, Munk as the profile says.
   std::optional<double> coefficient_rel_sigma;
+  double pitch_alignment_sigma_deg = 1.0;  // CalibrationPriors::pitch_alignment_sigma_deg
   // Open-water law of the propeller (the simulator's K_T = K_T0 (1 - (J/c1)^c2),
   // torque taken proportional to K_T): the torque regressor is rpm^2 K_T/K_T0
   // at each segment's advance ratio, not rpm^2 alone. Unset = rpm^2.

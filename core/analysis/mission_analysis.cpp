@@ -286,6 +286,7 @@ AnalysisReport detail::analyzeRecordedLog(const MissionLog& log, const VehiclePr
     ctx.hull_compressibility_per_dbar = v.hull.compressibility_per_dbar;
     ctx.hull_thermal_expansion_per_degC = v.hull.thermal_expansion_per_degC;
     ctx.coefficient_rel_sigma = o.coefficient_rel_sigma;
+    ctx.pitch_alignment_sigma_deg = o.pitch_alignment_sigma_deg;
     ctx.log_has_speed = hasSamples(log, "speed");
     ctx.log_has_elevator = hasSamples(log, "elevator");
     ctx.log_has_rpm = hasSamples(log, "prop_rpm");

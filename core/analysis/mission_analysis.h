@@ -39,6 +39,10 @@ struct AnalysisOptions {
   // Prior width of each hydrodynamic derivative group in the calibration
   // (--coefficient-sigma); unset = 30 % and an unknown Munk structure.
   std::optional<double> coefficient_rel_sigma;
+  // AUVs: prior sigma of the pitch sensor's bias, found from the log beside
+  // the ballast state (--pitch-alignment-sigma-deg; 0 = the sensor is
+  // aligned and read as true). An AHRS nobody aligned is off by up to a degree.
+  double pitch_alignment_sigma_deg = 1.0;
   double bg_profile_rel_sigma = 0.25;
   // Fit the log's transients through the simulator jointly with the steady
   // legs (auv_transient_fit.h) when the profile has the simulator sections

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "analysis/calibration_parameter.h"
 #include "discrepancy/rms_and_localisation.h"
 #include "discrepancy/residual_statistics.h"
 
@@ -28,6 +29,8 @@ void reportHeldTermFindings(const FitSetup& s, const std::vector<std::uint32_t>&
   for (const HeldTermValue& h : m.heldTerms()) {
     const auto k = findTerm(h.id);
     if (!k || !(std::abs(h.value - h.profile_value) > 2.0 * h.sigma)) continue;
+    const bool bias = h.id == "pitch_sensor_bias";  // held always, named only as large as a sensor's
+    if (bias && std::abs(h.value - h.profile_value) < analysis::kNamedPitchBiasDeg) continue;
     const PhysicsTerm& t = termLibrary()[*k];
     const double increment = (h.value - h.profile_value) / t.display_scale;  // SI, inside the model's baseline
     // The profile's value: the held term cancelled, ballast and accepted terms refitted.
@@ -62,8 +65,11 @@ void reportHeldTermFindings(const FitSetup& s, const std::vector<std::uint32_t>&
     }
     mp.inclusion_probability = 1.0;
     mp.t_value = std::abs(h.value - h.profile_value) / h.sigma;
-    mp.evidence = "fitted by the analysis from the steady legs' means at their depths, waters and times, which "
-                  "separate the hull's compressibility, its thermal expansion and a mass drift; the check holds it";
+    mp.evidence = bias ? "found by the analysis beside the ballast state: the steady legs at their speeds and the "
+                         "glides fit one balance only with the pitch reading this much more than the vehicle's "
+                         "attitude; the check holds it"
+                       : "fitted by the analysis from the steady legs' means at their depths, waters and times, which "
+                         "separate the hull's compressibility, its thermal expansion and a mass drift; the check holds it";
     if (!h.rival.empty()) {
       mp.confused_with.push_back(h.rival);
       mp.evidence += "; but the legs explain a " + h.rival + " alone about as well (the temperature followed the depth): "

@@ -50,7 +50,9 @@ std::vector<AuvCheckOptions::CalibrationPrior> analysisCalibrationPriors(const a
 std::vector<AuvCheckOptions::HeldTerm> analysisHeldTerms(const analysis::AnalysisReport& r) {
   std::vector<AuvCheckOptions::HeldTerm> out;
   for (const analysis::CalibrationParameter& c : r.calibration)
-    if ((c.id == "hull_compressibility" || c.id == "thermal_expansion" || c.id == "mass_drift") && c.used &&
+    if ((c.id == "hull_compressibility" || c.id == "thermal_expansion" || c.id == "mass_drift" ||
+         c.id == "pitch_sensor_bias") &&
+        c.used &&
         std::isfinite(c.value) &&
         std::isfinite(c.sigma) && c.sigma > 0.0)
       out.push_back({c.id, c.value, c.sigma, c.profile_value, c.prior_sigma, c.rival});

@@ -163,6 +163,23 @@ TEST(SimulateCli, SimulateThenAnalyzeRecoversTheBallastError) {
   const auto bad = runCli("analyze --vehicle " + profile_path + " --log " + log + " --coefficient-sigma 10%");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("coefficient-sigma"), std::string::npos) << bad.err;
+  // The pitch sensor's alignment is calibrated beside the ballast state
+  // (prior 0 +- 1 deg): this simulator's sensor is true, so the bias found
+  // covers 0; with --pitch-alignment-sigma-deg 0 the pitch is read as true.
+  const nlohmann::json* bias = nullptr;
+  for (const auto& q : j["calibration"])
+    if (q["id"] == "pitch_sensor_bias") bias = &q;
+  ASSERT_NE(bias, nullptr);
+  EXPECT_EQ((*bias)["unit"], "deg");
+  EXPECT_LE(std::abs((*bias)["value"].get<double>()), 2.0 * (*bias)["sigma"].get<double>());
+  EXPECT_LT((*bias)["sigma"].get<double>(), 0.2);
+  const auto aligned = runCli("analyze --vehicle " + profile_path + " --log " + log +
+                              " --installed 7.2,7.2,25.2,25.2 --pitch-alignment-sigma-deg 0 --json -");
+  ASSERT_EQ(aligned.code, 0) << aligned.err;
+  for (const auto& q : nlohmann::json::parse(aligned.out)["calibration"]) EXPECT_NE(q["id"], "pitch_sensor_bias");
+  const auto too_wide = runCli("analyze --vehicle " + profile_path + " --log " + log + " --pitch-alignment-sigma-deg 9");
+  EXPECT_EQ(too_wide.code, 2);
+  EXPECT_NE(too_wide.err.find("pitch-alignment-sigma-deg"), std::string::npos) << too_wide.err;
 }
 
 // --transients: on a 10 Hz log the depth steps and rpm changes, flown again

@@ -25,11 +25,14 @@ namespace auv::identification {
 namespace {
 
 // The analysis options the harness analysed its first log with: its pieces
-// and the BG of the roll test (held in the report's calibration).
-analysis::AnalysisOptions harnessOptions(const analysis::AnalysisReport& rep) {
+// and the BG of the roll test (held in the report's calibration). The tests
+// of an accepted bias read the (corrected) pitch as true, as the analysis
+// did before it carried the sensor's alignment itself.
+analysis::AnalysisOptions harnessOptions(const analysis::AnalysisReport& rep, double alignment_sigma_deg = 0.0) {
   analysis::AnalysisOptions a;
   a.installed_kg = {7.2, 7.2, 25.2, 25.2};
   a.bg_m = analysis::calibrationParameter(rep, "bg")->value;
+  a.pitch_alignment_sigma_deg = alignment_sigma_deg;
   return a;
 }
 
@@ -58,6 +61,39 @@ TEST(AttitudeSensorBias, TheReadingLessTheBiasAndTheCommandsAsLogged) {
   EXPECT_FALSE(analysis::acceptedAttitudeBias(glider).any());
 }
 
+// Truth 5501 of hugin_concealed_bench's pitch-bias case (a pitch sensor 1
+// deg high): read as true, the biased pitch puts the net buoyancy several
+// sigma off. With the sensor's alignment free beside the ballast state
+// (prior 0 +- 1 deg, the default) the analysis alone finds the bias from
+// the legs, says so, and its net buoyancy and CG x cover the truth.
+TEST(AttitudeSensorBias, TheAnalysisFindsAnUnalignedPitchSensor) {
+  Harness h;
+  h.concealed.pitch_bias_deg = 1.0;
+  int called = 0;
+  h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double x_truth) {
+    ++called;
+    const analysis::CalibrationParameter* b = analysis::calibrationParameter(rep, "pitch_sensor_bias");
+    ASSERT_NE(b, nullptr);
+    EXPECT_LE(std::abs(b->value - 1.0), 2.0 * b->sigma) << b->value << " +- " << b->sigma;
+    EXPECT_TRUE(b->identified);
+    EXPECT_LT(b->sigma, 0.2);
+    ASSERT_TRUE(rep.net_buoyancy_kg.known && rep.cg_x_mm.known);
+    EXPECT_LE(std::abs(rep.net_buoyancy_kg.value - net_truth), 2.0 * rep.net_buoyancy_kg.sigma)
+        << rep.net_buoyancy_kg.value << " +- " << rep.net_buoyancy_kg.sigma << " truth " << net_truth;
+    EXPECT_LE(std::abs(rep.cg_x_mm.value - x_truth), 2.0 * rep.cg_x_mm.sigma);
+    for (const char* id : {"hull_compressibility", "thermal_expansion", "mass_drift"})
+      EXPECT_FALSE(analysis::calibrationParameter(rep, id)->used) << id;
+    EXPECT_TRUE(std::any_of(rep.notes.begin(), rep.notes.end(),
+                            [](const Message& n) { return n.id() == "analysis.pitch_sensor_bias_found"; }));
+    const analysis::AnalysisReport as_true = analysis::analyzeMission(log, h.profile(), harnessOptions(rep));
+    ASSERT_TRUE(as_true.net_buoyancy_kg.known);
+    EXPECT_GT(std::abs(as_true.net_buoyancy_kg.value - net_truth), 3.0 * as_true.net_buoyancy_kg.sigma);
+    EXPECT_EQ(analysis::calibrationParameter(as_true, "pitch_sensor_bias"), nullptr);
+  };
+  h.run(5501, false);
+  EXPECT_EQ(called, 1);
+}
+
 // Truth 5501 of hugin_concealed_bench's pitch-bias case: read as true, the
 // biased pitch put the net buoyancy several sigma off and named a thermal
 // expansion of 2e-4 1/degC the hull does not have. With the bias accepted
@@ -65,6 +101,7 @@ TEST(AttitudeSensorBias, TheReadingLessTheBiasAndTheCommandsAsLogged) {
 TEST(AttitudeSensorBias, AnAcceptedPitchBiasGivesTheBallastStateOfTheTrueAttitude) {
   Harness h;
   h.concealed.pitch_bias_deg = 1.0;
+  h.pitch_alignment_sigma_deg = 0.0;  // the pitch read as true
   int called = 0;
   h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double) {
     ++called;
@@ -99,6 +136,7 @@ TEST(AttitudeSensorBias, AnAcceptedPitchBiasGivesTheBallastStateOfTheTrueAttitud
 TEST(AttitudeSensorBias, TheAcceptedBiasesSigmaIsInTheBallastStatesSigma) {
   Harness h;
   h.concealed.pitch_bias_deg = 1.0;
+  h.pitch_alignment_sigma_deg = 0.0;  // the pitch read as true
   h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double) {
     const analysis::AnalysisOptions a = harnessOptions(rep);
     VehicleProfile accepted = h.profile();
@@ -125,6 +163,7 @@ TEST(AttitudeSensorBias, TheAcceptedBiasesSigmaIsInTheBallastStatesSigma) {
 TEST(AttitudeSensorBias, AHullLawThatWasTheBiasReadAsTrueIsWithdrawn) {
   Harness h;
   h.concealed.pitch_bias_deg = 1.0;
+  h.pitch_alignment_sigma_deg = 0.0;  // the pitch read as true
   int called = 0;
   h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double) {
     ++called;

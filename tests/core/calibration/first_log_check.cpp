@@ -7,9 +7,10 @@
 namespace auv::identification {
 
 void checkFirstLogWithItsAnalysis(std::uint64_t seed, const FirstLogCheck& expect,
-                                  const discrepancy::SyntheticAuvTruth& concealed) {
+                                  const discrepancy::SyntheticAuvTruth& concealed, double pitch_alignment_sigma_deg) {
   Harness h;
   h.concealed = concealed;
+  h.pitch_alignment_sigma_deg = pitch_alignment_sigma_deg;
   int called = 0;
   h.on_first_log = [&](const MissionLog& log, const analysis::AnalysisReport& rep, double net_truth, double) {
     ++called;

@@ -15,6 +15,7 @@ namespace auv::identification {
 using FirstLogCheck = std::function<void(const discrepancy::ModelCheckResult&, const analysis::AnalysisReport&,
                                          double net_truth, const Harness&)>;
 void checkFirstLogWithItsAnalysis(std::uint64_t seed, const FirstLogCheck& expect,
-                                  const discrepancy::SyntheticAuvTruth& concealed = {});
+                                  const discrepancy::SyntheticAuvTruth& concealed = {},
+                                  double pitch_alignment_sigma_deg = 1.0);
 
 }  // namespace auv::identification

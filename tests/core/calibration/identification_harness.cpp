@@ -68,9 +68,10 @@ Flown fly(const sim::VehicleModel& truth, const sim::DepthAutopilotConfig& ap, c
 }
 
 analysis::AnalysisReport analyse(const Flown& f, const VehicleProfile& p, const std::vector<double>& installed,
-                                 bool transients) {
+                                 bool transients, double pitch_alignment_sigma_deg) {
   analysis::AnalysisOptions a;
   a.use_transients = transients;
+  a.pitch_alignment_sigma_deg = pitch_alignment_sigma_deg;
   a.log_name = "identification";
   a.installed_kg = installed;
   a.bg_m = f.bg_m;  // a roll test measures BG of the vehicle as it is
@@ -154,7 +155,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   const Flown f = fly(truth, nominal_.autopilot, m, installed, err, seed * 7 + 1, kInstalled, concealed);
 
   const auto t0 = std::chrono::steady_clock::now();
-  const analysis::AnalysisReport rep = analyse(f, profile_, kInstalled, use_transients);
+  const analysis::AnalysisReport rep = analyse(f, profile_, kInstalled, use_transients, pitch_alignment_sigma_deg);
   r.analysis_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // Through the JSON contract, so the harness also measures code from before the calibration.
   const nlohmann::json rj = analysis::toJson(rep);
@@ -262,7 +263,8 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   auto judge = [&](const Flown& fl, const analysis::AnalysisReport& rp, CaseResult::Outcome& o) {
     o.net_op_kg = resolvePoint(profile_.hull, next).displaced_kg - fl.mass_kg;
     o.min_net_kg = fl.min_net_kg;
-    o.pitch_deg = cruisePitchDeg(rp, *std::max_element(m.rpms.begin(), m.rpms.end()));
+    // The attitude the vehicle flies: a biased sensor's reading less its bias.
+    o.pitch_deg = cruisePitchDeg(rp, *std::max_element(m.rpms.begin(), m.rpms.end())) - concealed.pitch_bias_deg;
     o.roll_deg = rp.cruise_roll_deg.known ? rp.cruise_roll_deg.value : rp.roll_deg.mean;
     o.roll_reach_deg = units::radToDeg(std::atan(0.5 * y_point / (fl.mass_kg * fl.bg_m)));
     o.net_ok = o.net_op_kg >= s.net_buoyancy_min_kg && o.net_op_kg <= s.net_buoyancy_max_kg;
@@ -302,6 +304,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   a2.bg_m = f2.bg_m;
   a2.history = {{rep.steady_segments, kInstalled}};
   a2.use_transients = use_transients;
+  a2.pitch_alignment_sigma_deg = pitch_alignment_sigma_deg;
   const analysis::AnalysisReport rep2 = analysis::analyzeMission(f2.log, profile_, a2);
   if (!dump_prefix.empty()) std::ofstream(dump_prefix + "-2.json") << analysis::toJson(rep2).dump(1) << "\n";
   r.looped = true;
@@ -315,7 +318,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   r.two.planned_roll_deg = plan2.predicted.roll_deg;
   r.two.planned_net_kg = plan2.predicted.net_buoyancy_kg;
   const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2, concealed);
-  judge(f3, analyse(f3, profile_, after2, use_transients), r.two);
+  judge(f3, analyse(f3, profile_, after2, use_transients, pitch_alignment_sigma_deg), r.two);
   r.twice = true;
   r.net2_err_kg = rep2.net_buoyancy_kg.value - net2_truth;
   r.net2_sigma_kg = rep2.net_buoyancy_kg.sigma;

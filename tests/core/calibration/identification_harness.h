@@ -75,6 +75,9 @@ class Harness {
   double log_interval_s = 1.0;
   // Fit the transients jointly with the steady legs (AnalysisOptions::use_transients).
   bool use_transients = false;
+  // The analysis's prior on the pitch sensor's alignment
+  // (AnalysisOptions::pitch_alignment_sigma_deg; 0 = read as true).
+  double pitch_alignment_sigma_deg = 1.0;
   // The second mission also flies the calibration manoeuvre the first plan
   // asked for (details.calibration_manoeuvre.flight), as an operator told
   // to would; false: the survey lines only. Off by default: with the history

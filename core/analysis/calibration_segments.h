@@ -1,0 +1,15 @@
+#pragma once
+// The steady segments of the calibration (auv_calibration.h) as a pitch
+// sensor with a known bias would have read them.
+#include <vector>
+
+#include "analysis/auv_calibration.h"
+
+namespace auv::analysis {
+
+// Every segment's pitch lowered by bias_rad (reading minus true), and an
+// averaged leg's cycle products (BalanceRegressors) moved by what that shift
+// moves the products of its means: the balance is then the true attitude's.
+std::vector<CalibrationSegment> withPitchLowered(const std::vector<CalibrationSegment>& segs, double bias_rad);
+
+}  // namespace auv::analysis
