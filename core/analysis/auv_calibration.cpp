@@ -255,14 +255,6 @@ bool steadyPosterior(const SteadyHydroCoefficients& c, double W, double rho_ref,
   return true;
 }
 
-// chi2 from zero of the buoyancy laws' change with a pitch sensor bias free
-// beside them (prior 0 +- sigma_rad), at the free fit p. A biased pitch
-// sensor moves every leg's angle of attack by the same angle, so its
-// residuals grow as u^2 in heave and as u^2 plus W BG in pitch; a mission
-// whose speeds change with depth or with the hours shows them as a hull law
-// (hugin_concealed_bench: a 1 degree bias made thermal expansions of
-// 1.6-2.9e-4 1/degC at 5 sigma). A law is the log's only when it stands
-// with that bias free.
 // A reported angle (deg) outside the parameter vector, prior 0 +- prior_sigma.
 CalibrationParameter derivedParameter(const char* id, double value, double sigma, double prior_sigma) {
   CalibrationParameter q;
@@ -315,6 +307,14 @@ Eigen::MatrixXd informationOf(const Solved& s, const Priors& pr, double inflatio
   return info;
 }
 
+// chi2 from zero of the buoyancy laws' change with a pitch sensor bias free
+// beside them (prior 0 +- sigma_rad), at the free fit p. A biased pitch
+// sensor moves every leg's angle of attack by the same angle, so its
+// residuals grow as u^2 in heave and as u^2 plus W BG in pitch; a mission
+// whose speeds change with depth or with the hours shows them as a hull law
+// (hugin_concealed_bench: a 1 degree bias made thermal expansions of
+// 1.6-2.9e-4 1/degC at 5 sigma). A law is the log's only when it stands
+// with that bias free.
 double lawChi2WithPitchBias(const SteadyHydroCoefficients& c, double W, double rho_ref,
                             const std::vector<CalibrationSegment>& segs, const Priors& pr, const Eigen::VectorXd& p,
                             double sigma_rad, double inflation) {
