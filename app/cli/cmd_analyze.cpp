@@ -12,19 +12,23 @@
 #include "commands.h"
 #include "common/input_error.h"
 #include "common/units.h"
+#include "history/configuration_id.h"
+#include "history/store.h"
+#include "history/timestamp.h"
 #include "missionlog/log_reader.h"
 #include "number_list.h"
 #include "planning/glider_ballast_plan.h"
 #include "planning/recommend_from_analysis.h"
 #include "target_flags.h"
 #include "vehicle/vehicle_catalog.h"
+#include "workflow/history_calibration.h"
 
 namespace auv::cli {
 namespace {
 
 struct AnalyzeOpts {
   std::vector<std::string> log;
-  std::string cache_dir, vehicle, installed, bg_mm, coefficient_sigma, pitch_alignment_sigma, json;
+  std::string cache_dir, vehicle, installed, bg_mm, coefficient_sigma, pitch_alignment_sigma, json, config, history;
   TargetFlags target;
   bool no_classic = false;
   bool transients = false;
@@ -59,6 +63,16 @@ int runAnalyze(const AnalyzeOpts& o) {
   }
   a.classic = !o.no_classic;
   a.use_transients = o.transients;
+
+  // With a configuration: the pieces that flew (unless given), its roll
+  // test's BG and its latest analysed mission, whose known weight change
+  // calibrates jointly with this one. Read only: model-check --config and
+  // the wizard record missions.
+  if (!o.config.empty()) {
+    requireValidConfigurationId(o.config);
+    HistoryStore store(historyPath(o.history));
+    addConfigurationHistory(store, o.config, v, nowUtc(), a);
+  }
 
   ReadReport readReport;
   const MissionLog log = readLogArgument(o.log, logReadOptions(o.cache_dir), readReport);
@@ -117,6 +131,11 @@ Command addAnalyzeCommand(CLI::App& app) {
   cmd->add_option("--pitch-alignment-sigma-deg", o->pitch_alignment_sigma,
                   "AUVs: prior 1-sigma of the pitch sensor's bias, which the calibration finds beside the ballast "
                   "state (calibration id pitch_sensor_bias; default 1 deg; 0 = the sensor is aligned)");
+  cmd->add_option("--config", o->config,
+                  "AUVs: configuration ID in the history: the pieces that flew and BG default to its installed state "
+                  "and roll test, and the analysis calibrates jointly with its latest analysed mission (the known "
+                  "weight change between them; details.auv_estimate.history_segments_used). Nothing is written");
+  cmd->add_option("--history", o->history, "History database for --config (default: the user's, as for 'plan')");
   cmd->add_flag("--no-classic", o->no_classic, "Skip the thesis's App. D checks (reported under details.classic)");
   cmd->add_flag("--transients", o->transients,
                 "AUVs: also fit the depth-step and propeller-speed transients through the simulator, jointly with "

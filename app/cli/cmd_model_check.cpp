@@ -92,15 +92,8 @@ int runModelCheck(const ModelCheckOpts& o) {
   if (!o.config.empty()) {
     requireValidConfigurationId(o.config);
     store = std::make_unique<HistoryStore>(historyPath(o.history));
-    const HistoryPlanInputs h = planInputsFromHistory(*store, o.config, v, nowUtc());
-    if (!h.configuration_known)
-      throw InputError("config", "'" + o.config + "' is not in the history '" + store->path() + "'",
-                       "record the configuration first (first-mission or the wizard)");
-    if (a.installed_kg.empty() && h.installed) {
-      a.installed_kg = installedKg(*h.installed, v, o.config);
-      setup.auv.installed_kg = a.installed_kg;
-    }
-    a.history = historyCalibrationMissions(*store, o.config, v, nowUtc(), logName);
+    addConfigurationHistory(*store, o.config, v, nowUtc(), a);
+    setup.auv.installed_kg = a.installed_kg;
   }
 
   ReadReport readReport;

@@ -107,6 +107,10 @@ inline constexpr MessageFormat kNoElevator{
 inline constexpr MessageFormat kHistoryCalibration{
     "analysis.history_calibration",
     "calibrated with %1 steady segments of earlier missions of this configuration and the known weight changes since"};
+inline constexpr MessageFormat kHistoryUnreadable{
+    "analysis.history_unreadable",
+    "the earlier mission of configuration %1 could not be read from the history (%2): this log is analysed alone, "
+    "without the known weight change since"};
 inline constexpr MessageFormat kThrusterSegmentsLeftOut{
     "analysis.thruster_segments_left_out",
     "%1 steady segment(s) left out: the tunnel thrusters ran there (up to %2 rpm), and the steady balance has no "
@@ -175,7 +179,7 @@ inline constexpr const MessageFormat* kAll[] = {
     &kNoDepthCommand, &kCtdOutOfRange, &kNoDensity, &kGliderCgX, &kGliderCgY, &kNoPumpVolume, &kNoPitch, &kNoSteadyDiveOrClimb, &kFewGlideSamples,
     &kLogMassDiffers, &kGliderFitNotConverged, &kGliderDefaultConstants, &kGliderDefaultCompressibility,
     &kNoRollSamples, &kNoPropRpm, &kOneCruiseRpm, &kCgYNeedsBg, &kNoSteadyLevelSegment, &kNoSpeed, &kNoSpeedAndPitch,
-    &kNoElevator, &kHistoryCalibration, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kGlidesDropped, &kCalibrationPriorConflict, &kTransientsNotFlownAsCommanded, &kTransientsWithHistory, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
+    &kNoElevator, &kHistoryCalibration, &kHistoryUnreadable, &kThrusterSegmentsLeftOut, &kThrustersInEverySegment, &kTransientsDropped, &kGlidesDropped, &kCalibrationPriorConflict, &kTransientsNotFlownAsCommanded, &kTransientsWithHistory, &kDegenerate, &kElevatorOffsetPrior, &kPlaneSignConverted, &kJointCalibration,
     &kPosteriorSigmas, &kPosteriorSigmasMunk, &kBgFromProfile, &kTrimmedCruise};
 
 }  // namespace auv::analysis::msg

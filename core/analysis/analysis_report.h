@@ -94,6 +94,11 @@ struct AnalysisReport {
   // AUVs: the steady segments the estimate used, with their absolute
   // buoyancy, so a later mission can calibrate from this one (typed, not JSON).
   std::vector<SteadySegmentMeans> steady_segments;
+  // AUVs: the accepted attitude sensor biases (attitude_sensor_bias.h) taken
+  // out of the log before the analysis, so out of steady_segments too, deg
+  // (JSON details.auv_estimate.attitude_bias_removed_deg). A later mission
+  // analysed with another accepted bias re-references these segments.
+  double pitch_bias_removed_deg = 0.0, roll_bias_removed_deg = 0.0;
 
   std::vector<SegmentReport> segments;  // phases, then operating windows, in time order
   // Advice with message ids (common/message.h): the English is what the CLI prints.

@@ -8,6 +8,7 @@
 
 #include "analysis/analysis_messages.h"
 #include "analysis/attitude_sensor_bias.h"
+#include "analysis/calibration_segments.h"
 #include "analysis/mission_analysis.h"
 
 namespace auv::analysis {
@@ -17,6 +18,29 @@ std::string text(const char* f, double v) {
   char b[32];
   std::snprintf(b, sizeof b, f, v);
   return b;
+}
+
+// The log with `b` taken out, analysed with the history's segments read
+// the same way: each was stored with the biases its own analysis took out,
+// and the sensor is the same (a history mission analysed before a 1 deg
+// bias was accepted would otherwise join with legs 1 deg off, about 6 kg on
+// a HUGIN's net buoyancy).
+AnalysisReport analyzeWithBiasRemoved(const MissionLog& log, const VehicleProfile& v, const AnalysisOptions& o,
+                                      const AttitudeSensorBias& b) {
+  AnalysisOptions on_sensor = o;
+  for (HistoryMission& h : on_sensor.history) {
+    for (SteadySegmentMeans& s : h.segments)
+      s = withAttitudeRaised(s, h.pitch_bias_removed_deg - b.pitch_deg, h.roll_bias_removed_deg - b.roll_deg);
+    h.pitch_bias_removed_deg = b.pitch_deg;
+    h.roll_bias_removed_deg = b.roll_deg;
+  }
+  const std::optional<MissionLog> corrected = withAttitudeBiasRemoved(log, b);
+  AnalysisReport rep = detail::analyzeRecordedLog(corrected ? *corrected : log, v, on_sensor);
+  rep.pitch_bias_removed_deg = b.pitch_deg;
+  rep.roll_bias_removed_deg = b.roll_deg;
+  if (b.any() && rep.details.contains("auv_estimate"))
+    rep.details["auv_estimate"]["attitude_bias_removed_deg"] = {{"pitch", b.pitch_deg}, {"roll", b.roll_deg}};
+  return rep;
 }
 
 // The ballast state's sigmas widened by an accepted bias's own sigma: the
@@ -30,8 +54,8 @@ void carryBiasSigma(const MissionLog& log, const VehicleProfile& v, const Analys
     AttitudeSensorBias hi = bias, lo = bias;
     hi.*angle += sigma;
     lo.*angle -= sigma;
-    const AnalysisReport a = detail::analyzeRecordedLog(*withAttitudeBiasRemoved(log, hi), v, o);
-    const AnalysisReport b = detail::analyzeRecordedLog(*withAttitudeBiasRemoved(log, lo), v, o);
+    const AnalysisReport a = analyzeWithBiasRemoved(log, v, o, hi);
+    const AnalysisReport b = analyzeWithBiasRemoved(log, v, o, lo);
     for (auto member : {&AnalysisReport::net_buoyancy_kg, &AnalysisReport::cg_x_mm, &AnalysisReport::cg_y_mm}) {
       EstimatedValue& e = rep.*member;
       if (e.known && (a.*member).known && (b.*member).known)
@@ -46,9 +70,8 @@ void carryBiasSigma(const MissionLog& log, const VehicleProfile& v, const Analys
 
 AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, const AnalysisOptions& o) {
   const AttitudeSensorBias bias = acceptedAttitudeBias(v);
-  const std::optional<MissionLog> corrected = withAttitudeBiasRemoved(log, bias);
-  if (!corrected) return detail::analyzeRecordedLog(log, v, o);
-  AnalysisReport rep = detail::analyzeRecordedLog(*corrected, v, o);
+  AnalysisReport rep = analyzeWithBiasRemoved(log, v, o, bias);
+  if (!bias.any()) return rep;
   carryBiasSigma(log, v, o, bias, rep);
   // What the legs still show is on top of the accepted bias: report the sensor's whole bias.
   for (CalibrationParameter& q : rep.calibration)

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "analysis/auv_calibration.h"
+#include "common/units.h"
 
 namespace auv::analysis {
 namespace {
@@ -25,6 +26,31 @@ std::vector<CalibrationSegment> withPitchLowered(const std::vector<CalibrationSe
     r.aw_w += b.aw_w - a.aw_w;
   }
   return out;
+}
+
+SteadySegmentMeans withAttitudeRaised(SteadySegmentMeans s, double pitch_deg, double roll_deg) {
+  if (pitch_deg == 0.0 && roll_deg == 0.0) return s;
+  // As the calibration reads a segment (auv_trim_estimation.cpp, measOf).
+  auto flight = [&](const SteadySegmentMeans& g) {
+    return SteadyFlight{g.speed_mps.mean, units::degToRad(g.pitch_deg.mean),
+                        g.roll_deg.valid() ? units::degToRad(g.roll_deg.mean) : 0.0,
+                        std::isfinite(g.elevator_deg.mean) ? g.elevator_deg.mean : 0.0,
+                        g.depth_rate_mps.valid() ? g.depth_rate_mps.mean : 0.0, g.density_kgm3};
+  };
+  const SteadySegmentMeans before = s;
+  s.pitch_deg.mean += pitch_deg;
+  if (s.roll_deg.valid()) s.roll_deg.mean += roll_deg;
+  if (s.regressors) {
+    const BalanceRegressors a = balanceRegressors(flight(before));
+    const BalanceRegressors b = balanceRegressors(flight(s));
+    BalanceRegressors& r = *s.regressors;
+    r.cc += b.cc - a.cc;
+    r.sin_theta += b.sin_theta - a.sin_theta;
+    r.au_w += b.au_w - a.au_w;
+    r.u_w += b.u_w - a.u_w;
+    r.aw_w += b.aw_w - a.aw_w;
+  }
+  return s;
 }
 
 }  // namespace auv::analysis

@@ -25,7 +25,17 @@ namespace auv::analysis {
 struct HistoryMission {
   std::vector<SteadySegmentMeans> segments;
   std::vector<double> installed_kg;
+  // The accepted sensor biases its analysis took out of these segments
+  // (AnalysisReport::pitch_bias_removed_deg): analyzeMission puts them on
+  // the footing of the biases it takes out now, the sensor being the same.
+  double pitch_bias_removed_deg = 0.0, roll_bias_removed_deg = 0.0;
 };
+
+// An analysed mission as history: its steady segments, the pieces installed
+// then, and the biases its analysis took out.
+inline HistoryMission historyMissionOf(const AnalysisReport& r, std::vector<double> installed_kg) {
+  return {r.steady_segments, std::move(installed_kg), r.pitch_bias_removed_deg, r.roll_bias_removed_deg};
+}
 
 struct AnalysisOptions {
   std::string log_name;

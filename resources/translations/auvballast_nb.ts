@@ -24,7 +24,7 @@
         <translation>%1 etappe(r) der fartøyet svingte sakte opp og ned ble midlet over hele svingninger.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="135"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="136"/>
         <source>The analysed log was not flown as commanded (see its warnings), so this move rests on a net buoyancy uncertainty of ±%2 kg: after the move, make a short test dive at the survey&apos;s speeds before the survey.</source>
         <translation>Den analyserte loggen ble ikke fløyet som beordret (se advarslene), så denne flyttingen hviler på en usikkerhet i netto oppdrift på ±%2 kg: etter flyttingen, ta et kort prøvedykk ved kartleggingens hastigheter før kartleggingen.</translation>
     </message>
@@ -180,565 +180,570 @@
     </message>
     <message>
         <location filename="../../ui/wizard/advice_text.cpp" line="57"/>
+        <source>The earlier mission of configuration %1 could not be read from the history (%2): this log is analysed alone, without the known weight change since.</source>
+        <translation>Det tidligere oppdraget med konfigurasjon %1 kunne ikke leses fra historikken (%2): denne loggen analyseres alene, uten den kjente vektendringen siden.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
         <source>%1 steady segment(s) left out: the tunnel thrusters ran there (up to %2 rpm), and the steady balance has no thruster term (the model check replays them).</source>
         <translation>%1 stødige segment(er) utelatt: tunnelthrusterne gikk der (opptil %2 o/min), og den stødige balansen har ikke noe thrusterledd (modellsjekken spiller dem av igjen).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="58"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="59"/>
         <source>Not identifiable from this log: the tunnel thrusters ran in all %1 steady segment(s) (up to %2 rpm) and carry an unknown part of the net buoyancy, which the steady balance has no term for. Fly steady legs above the thrusters&apos; hand-over speed, or use the model check, which replays them.</source>
         <translation>Ikke identifiserbart fra denne loggen: tunnelthrusterne gikk i alle %1 stødige segment(er) (opptil %2 o/min) og bærer en ukjent del av netto oppdrift, som den stødige balansen ikke har noe ledd for. Fly stødige etapper over thrusternes overgangsfart, eller bruk modellsjekken, som spiller dem av igjen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="59"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="60"/>
         <source>%1 dive(s) or climb(s) held a steady pitch but did not fit the balance the other legs calibrated (the depth changed at a pitch and elevator no steady flight has): left out of the estimate.</source>
         <translation>%1 dykk eller stigning(er) holdt stødig stamp, men passet ikke med balansen de andre etappene kalibrerte (dybden endret seg ved en stamp og et dybderor som ingen stødig flyging har): utelatt fra estimatet.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="60"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="61"/>
         <source>The depth steps and speed changes disagreed among themselves more than they added (net buoyancy ± %1 kg with them, ± %2 kg from the steady segments alone): the estimate is the steady segments&apos;.</source>
         <translation>Dybdetrinnene og fartsendringene var mer uenige seg imellom enn de tilførte (netto oppdrift ± %1 kg med dem, ± %2 kg fra de stødige segmentene alene): estimatet er de stødige segmentenes.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="61"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="62"/>
         <source>The log put %1 at %2 where the profile has %3 ± %4: more than three prior sigmas away, which no vehicle of this class has, so the steady balance did not describe this log (a pitch sensor bias, legs that were not steady, or a profile of another vehicle). The net buoyancy and CG rest on that balance: check the attitude sensor&apos;s alignment and the profile before moving weights.</source>
         <translation>Loggen la %1 på %2 der profilen har %3 ± %4: mer enn tre a priori-sigma unna, noe ingen fartøy i denne klassen har, så den stødige balansen beskrev ikke denne loggen (en skjevhet i stampesensoren, etapper som ikke var stødige, eller en profil for et annet fartøy). Netto oppdrift og tyngdepunkt hviler på den balansen: kontroller innrettingen av attitydesensoren og profilen før du flytter lodd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="62"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="63"/>
         <source>The depth steps and speed changes were not flown again: the vehicle did not fly as commanded (too light or porpoising), and there the replay fits the plane stop and the autopilot instead of the hydrodynamics. The estimate is the steady segments&apos;.</source>
         <translation>Dybdetrinnene og fartsendringene ble ikke fløyet på nytt: fartøyet fløy ikke som kommandert (for lett eller porpoising), og der tilpasser gjenavspillingen rorstoppet og autopiloten i stedet for hydrodynamikken. Estimatet er de stødige segmentenes.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="63"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="64"/>
         <source>The depth steps and speed changes were not flown again: the earlier missions and the known weight changes calibrate the vehicle, and the replay added model error, not information.</source>
         <translation>Dybdetrinnene og fartsendringene ble ikke fløyet på nytt: de tidligere oppdragene og de kjente vektendringene kalibrerer fartøyet, og gjenavspillingen tilførte modellfeil, ikke informasjon.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="64"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="65"/>
         <source>Not identifiable from this log: the steady segments do not determine the heave and pitch balance.</source>
         <translation>Kan ikke bestemmes fra denne loggen: de stødige segmentene bestemmer ikke balansen i hiv og stamp.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="65"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="66"/>
         <source>Elevator zero offset assumed 0 ± %1° (included in the uncertainties): the steady segments do not span enough speeds to tell it from the net buoyancy.</source>
         <translation>Dybderorets nullpunktsavvik er antatt 0 ± %1° (tatt med i usikkerhetene): de stødige segmentene spenner ikke over nok hastigheter til å skille det fra netto oppdrift.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="66"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="67"/>
         <source>The plane coefficients were converted to the log&apos;s elevator sign (trailing edge down positive).</source>
         <translation>Rorkoeffisientene ble regnet om til loggens fortegn for dybderoret (bakkant ned positiv).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="67"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="68"/>
         <source>The vehicle&apos;s hydrodynamics were calibrated together with the ballast state (%1 parameters determined by the log).</source>
         <translation>Fartøyets hydrodynamikk ble kalibrert sammen med ballasttilstanden (%1 parametere bestemt av loggen).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="68"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="69"/>
         <source>The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients).</source>
         <translation>Usikkerhetene kommer fra den kalibreringen (%1 % usikkerhet på forhånd per gruppe av hydrodynamiske koeffisienter).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="69"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="70"/>
         <source>The uncertainties come from that calibration (%1 % prior uncertainty per group of hydrodynamic coefficients; the Munk moment&apos;s form unknown).</source>
         <translation>Usikkerhetene kommer fra den kalibreringen (%1 % usikkerhet på forhånd per gruppe av hydrodynamiske koeffisienter; formen på Munk-momentet er ukjent).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="70"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="71"/>
         <source>BG from the vehicle profile (%1 mm ± %2 %) sets the scale of the pitch moments; BG from a roll test sharpens CG x.</source>
         <translation>BG fra fartøyprofilen (%1 mm ± %2 %) bestemmer skalaen på stampmomentene; BG fra en rulletest gjør tyngdepunkt x skarpere.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="71"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="72"/>
         <source>Once trimmed, the vehicle should cruise at %1 m/s at %2 rpm (this log: %3 m/s); the propeller torque there changes by %4 N m, and the roll the plan levels includes it (CG y at cruise %5 mm).</source>
         <translation>Når fartøyet er trimmet, bør det gå %1 m/s ved %2 o/min (denne loggen: %3 m/s); propellmomentet endres der med %4 N m, og rullingen planen retter opp tar det med (tyngdepunkt y i marsj %5 mm).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="76"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="77"/>
         <source>%1: no change (%2 stays).</source>
         <translation>%1: ingen endring (%2 blir).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="77"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="78"/>
         <source>Priorities (thesis §5.4): net buoyancy %1 to %2 and never negative, then pitch within ±%3, then roll within ±%4; %5 piece(s) to handle.</source>
         <translation>Prioriteringer (avhandlingen §5.4): netto oppdrift %1 til %2 og aldri negativ, deretter stamp innenfor ±%3, deretter rull innenfor ±%4; %5 lodd å håndtere.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="78"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="79"/>
         <source>After the move: net buoyancy %1, pitch %2, roll %3.</source>
         <translation>Etter flyttingen: netto oppdrift %1, stamp %2, rull %3.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="79"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="80"/>
         <source>Half-way policy: this move aims at about half of the needed change (net buoyancy %1 to %2, pitch %3, roll %4); check the vehicle again and repeat.</source>
         <translation>Halvveis-strategi: denne flyttingen sikter mot omtrent halvparten av nødvendig endring (netto oppdrift %1 til %2, stamp %3, rull %4); kontroller fartøyet igjen og gjenta.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="81"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="82"/>
         <source>The four scale readings add up to %1 but the hook reads %2 (tolerance %3): the CG uses the four readings, the mass uses the hook.</source>
         <translation>De fire vekttallene blir til sammen %1, men kroken viser %2 (toleranse %3): tyngdepunktet bruker de fire tallene, massen bruker kroken.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="82"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="83"/>
         <source>h = %1 is implausibly large for a glider (about 6 mm is usual): check the roll signs and which rail the mass hung on.</source>
         <translation>h = %1 er urimelig stor for en glider (omkring 6 mm er vanlig): kontroller fortegnene på rullen og hvilken skinne loddet hang på.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="83"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="84"/>
         <source>The single h values spread by %1 (%2 of the mean): repeat the roll test.</source>
         <translation>De enkelte h-verdiene sprer med %1 (%2 av middelverdien): gjenta rulletesten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="84"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="85"/>
         <source>The bottles cannot hold the level split (bow %1, aft %2): the glider will not float level. Move a disk or rail weight.</source>
         <translation>Flaskene kan ikke ta den vannrette fordelingen (baug %1, akter %2): glideren vil ikke flyte vannrett. Flytt en skive eller et skinnelodd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="85"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="86"/>
         <source>The bottles are full: %1 more is needed for neutral, so the glider stays light. Add ballast elsewhere.</source>
         <translation>Flaskene er fulle: %1 til trengs for nøytral oppdrift, så glideren forblir lett. Legg ballast et annet sted.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="86"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="87"/>
         <source>The bottles are empty: %1 more must come out, so the glider stays HEAVY. Remove a disk or rail weight.</source>
         <translation>Flaskene er tomme: %1 til må ut, så glideren forblir TUNG. Ta ut en skive eller et skinnelodd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="88"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="89"/>
         <source>The CG is not below the CB with the BG of the vehicle profile: the vehicle would capsize. Check BG in the vehicle profile.</source>
         <translation>Tyngdepunktet ligger ikke under oppdriftssenteret med BG fra fartøyprofilen: fartøyet ville kantre. Kontroller BG i fartøyprofilen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="89"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="90"/>
         <source>In the tank (%1, %2) the glider displaces %3 (%4); at %5 the hull measures %6 and is neutral at %7 in %8 water.</source>
         <translation>I tanken (%1, %2) fortrenger glideren %3 (%4); ved %5 måler skroget %6 og er nøytralt ved %7 i vann på %8.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="90"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="91"/>
         <source>It weighs %1, so it is %2 light: the bottles change by %3 (rounded down to whole grams so it never ends heavy).</source>
         <translation>Den veier %1, så den er %2 for lett: flaskene endres med %3 (rundet ned til hele gram så den aldri ender tung).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="91"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="92"/>
         <source>It weighs %1, so it is %2 heavy: the bottles change by %3 (rounded down to whole grams so it never ends heavy).</source>
         <translation>Den veier %1, så den er %2 for tung: flaskene endres med %3 (rundet ned til hele gram så den aldri ender tung).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="92"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="93"/>
         <source>Bow bottles: %1 in %2 and %3 in %4 (%5), so the bow scale would read %6 and the glider floats level.</source>
         <translation>Baugflasker: %1 i %2 og %3 i %4 (%5), så baugvekten ville vise %6 og glideren flyter plant.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="93"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="94"/>
         <source>Aft bottles: %1 in %2 and %3 in %4 (%5), so the aft scale would read %6 and the glider floats level.</source>
         <translation>Akterflasker: %1 i %2 og %3 i %4 (%5), så aktervekten ville vise %6 og glideren flyter plant.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="94"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="95"/>
         <source>No roll test recorded: set the bottles, hang the glider for the roll test (report 4.2) and enter it on the roll-test page; until then the CG height is the profile&apos;s BG.</source>
         <translation>Ingen rulletest registrert: sett flaskene, heng opp glideren for rulletesten (rapport 4.2) og før den inn på rulletestsiden; inntil da er tyngdepunktets høyde profilens BG.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="95"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="96"/>
         <source>Roll test: h = %1 from %2 hung masses, so G sits %3 to %4 of B and %5 below it.</source>
         <translation>Rulletest: h = %1 fra %2 opphengte masser, så G ligger %3 mot %4 av B og %5 under den.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="96"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="97"/>
         <source>Move %1 of rail weight from the %2 wing rail: the battery alone cannot reach the roll.</source>
         <translation>Flytt %1 skinnevekt fra %2 vingeskinne: batteriet alene kan ikke nå rullen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="97"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="98"/>
         <source>Move %1 of lead from the %2 bow bottle: the battery cannot reach the roll.</source>
         <translation>Flytt %1 bly fra %2 baugflaske: batteriet kan ikke nå rullen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="98"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="99"/>
         <source>Move %1 of lead from the %2 bow bottle: the battery and wing rails cannot reach the roll.</source>
         <translation>Flytt %1 bly fra %2 baugflaske: batteriet og vingeskinnene kan ikke nå rullen.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="99"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="100"/>
         <source>Set the roll battery to %1 (%2, toward %3; now %4) to bring G straight below B.</source>
         <translation>Sett rullbatteriet til %1 (%2, mot %3; nå %4) for å bringe G rett under B.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="100"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="101"/>
         <source>The battery, wing rails and bow bottles together cannot cancel the roll: %1 remains. Move other masses sideways.</source>
         <translation>Batteriet, vingeskinnene og baugflaskene kan ikke sammen oppheve rullen: %1 gjenstår. Flytt andre masser sideveis.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="101"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="102"/>
         <source>Swap disk column %1 (%2 top, %3 bottom), which %4 G by %5.</source>
         <translation>Bytt om skivesøyle %1 (%2 øverst, %3 nederst), som %4 G med %5.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="102"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="103"/>
         <source>Move %1 of lead from the %2 aft bottle, so h goes from %3 to %4 (target %5).</source>
         <translation>Flytt %1 bly fra %2 akterflaske, så h går fra %3 til %4 (mål %5).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="103"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="104"/>
         <source>The h-arm target %1 cannot be reached with the disk weights and aft bottles; best is %2 (arrangement %3).</source>
         <translation>Målet for h-armen %1 kan ikke nås med skivevektene og akterflaskene; best er %2 (oppsett %3).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="104"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="105"/>
         <source>The predicted net buoyancy %1 is below the profile&apos;s band: the glider would end HEAVY.</source>
         <translation>Forventet netto oppdrift %1 er under profilens bånd: glideren ville ende TUNG.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="105"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="106"/>
         <source>The predicted net buoyancy %1 is above the profile&apos;s band.</source>
         <translation>Forventet netto oppdrift %1 er over profilens bånd.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="106"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="107"/>
         <source>The predicted pitch %1 is outside ±%2.</source>
         <translation>Forventet stamp %1 er utenfor ±%2.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="107"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="108"/>
         <source>The predicted roll %1 is outside ±%2.</source>
         <translation>Forventet rull %1 er utenfor ±%2.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="109"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="110"/>
         <source>What is in the bottles was not given: their capacities are checked against half-full bottles. Enter what is installed to check them.</source>
         <translation>Innholdet i flaskene ble ikke oppgitt: kapasitetene kontrolleres mot halvfulle flasker. Før inn hva som er montert for å kontrollere dem.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="110"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="111"/>
         <source>The wing rails cannot take the whole roll correction (%1 g); move the roll battery or a disk weight for the rest.</source>
         <translation>Vingeskinnene kan ikke ta hele rullkorreksjonen (%1 g); flytt rullbatteriet eller en skivevekt for resten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="111"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="112"/>
         <source>the pitch trim (the log has no battery position, or it varies too little): the bottle split is Baird&apos;s level split only</source>
         <translation>stamptrimmen (loggen har ingen batteriposisjon, eller den varierer for lite): fordelingen på flaskene er bare Bairds plane fordeling</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="112"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="113"/>
         <source>the roll (the log has no roll in glides)</source>
         <translation>rullen (loggen har ingen rull under gliding)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="113"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="114"/>
         <source>C_PITCH (the log has no pitch-mass position with enough variation)</source>
         <translation>C_PITCH (loggen har ingen posisjon for stampmassen med nok variasjon)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="114"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="115"/>
         <source>where the grams go: the log carries no geometry of the ballast places; add %1 g at the vehicle&apos;s ballast places so that it stays level</source>
         <translation>hvor grammene skal: loggen har ingen geometri for ballaststedene; legg %1 g på fartøyets ballaststeder slik at det holder seg plant</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="115"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="116"/>
         <source>the ballast (pump) zero offset in the vendor&apos;s setting: only the mass change is known</source>
         <translation>ballastens (pumpens) nullpunktsforskyvning i produsentens innstilling: bare masseendringen er kjent</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="118"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="119"/>
         <source>No change: the vehicle is already as good as the kit allows.</source>
         <translation>Ingen endring: fartøyet er allerede så godt som vektsettet tillater.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="119"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="120"/>
         <source>Next mission at %1: from net buoyancy %2, pitch %3, roll %4 to %5 ± %6, pitch %7 ± %8, roll %9 ± %10 (1 σ).</source>
         <translation>Neste oppdrag ved %1: fra netto oppdrift %2, stamp %3, rull %4 til %5 ± %6, stamp %7 ± %8, rull %9 ± %10 (1 σ).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="120"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="121"/>
         <source>Mass %1 from the last mission: %2 displaced at %3, %4, %5 minus the measured net buoyancy %6.</source>
         <translation>Masse %1 fra forrige oppdrag: %2 fortrengt ved %3, %4, %5 minus målt netto oppdrift %6.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="121"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="122"/>
         <source>Safety margin %1 = %2 × σ %3 (estimate and water): the change keeps at least that much net buoyancy at every planned point.</source>
         <translation>Sikkerhetsmargin %1 = %2 × σ %3 (estimat og vann): endringen beholder minst så mye netto oppdrift i hvert planlagte punkt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="122"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="123"/>
         <source>CG x was not identified from the log: the plan assumes it at the CB and keeps the fore-aft balance. Check pitch on the next mission.</source>
         <translation>Tyngdepunkt x ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder balansen forut-akter. Kontroller stampen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="123"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="124"/>
         <source>CG y was not identified from the log: the plan assumes it at the CB and keeps the side balance. Check roll on the next mission.</source>
         <translation>Tyngdepunkt y ble ikke bestemt fra loggen: planen antar det i oppdriftssenteret og beholder sidebalansen. Kontroller rullen på neste oppdrag.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="124"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="125"/>
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="125"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="126"/>
         <source>UNSAFE: at the %1 point (%2) the vehicle would have %3 net buoyancy, less than the safety margin %4: it would sink if it lost power there.</source>
         <translation>USIKKERT: i punktet for %1 (%2) ville fartøyet hatt %3 netto oppdrift, mindre enn sikkerhetsmarginen %4: det ville synke om det mistet strømmen der.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="126"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="127"/>
         <source>Net buoyancy %1 at the operating depth is above the band (%2) because the safety margin (%3) and the less buoyant planned points (%4 less) come first.</source>
         <translation>Netto oppdrift %1 på operasjonsdybden er over båndet (%2) fordi sikkerhetsmarginen (%3) og de planlagte punktene med mindre oppdrift (%4 mindre) går foran.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="127"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="128"/>
         <source>The net buoyancy band cannot be reached with this kit while keeping the safety margin: no combination of pieces lands between %1 and %2; the nearest safe one is %3.</source>
         <translation>Båndet for netto oppdrift kan ikke nås med dette vektsettet uten å gi opp sikkerhetsmarginen: ingen kombinasjon av lodd lander mellom %1 og %2; den nærmeste sikre er %3.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="128"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="129"/>
         <source>The kit has optional pieces (%1) not used in this plan; allowing them may reach the missed band.</source>
         <translation>Vektsettet har valgfrie lodd (%1) som ikke er brukt i denne planen; tillater du dem, kan båndet som ble bommet på kanskje nås.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="129"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="130"/>
         <source>The estimate&apos;s own uncertainty (pitch %1, roll %2) is wider than a tolerance band; the next mission will tell.</source>
         <translation>Estimatets egen usikkerhet (stamp %1, rull %2) er bredere enn et toleransebånd; neste oppdrag vil vise det.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="130"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="131"/>
         <source>Classic table (thesis App. E): %1, pitch error %2, roll error %3; it moves one %4 piece per point and mission, whatever the size of the error.</source>
         <translation>Klassisk tabell (oppgavens vedlegg E): %1, stampavvik %2, rullavvik %3; den flytter ett lodd på %4 per punkt og oppdrag, uansett hvor stort avviket er.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="131"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="132"/>
         <source>The classic table asks to remove a piece where none is installed, so it changes nothing.</source>
         <translation>Den klassiske tabellen ber om å fjerne et lodd der ingen er montert, så den endrer ingenting.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="132"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="133"/>
         <source>The classic table uses the standard kit only.</source>
         <translation>Den klassiske tabellen bruker bare standard vektsett.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="137"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="138"/>
         <source>Roll is planned and predicted at cruise (%1 rpm, propeller torque included): the side balance that levels the vehicle there, as the thesis judges roll (§5.3.3).</source>
         <translation>Rull er planlagt og forutsagt i marsjfart (%1 o/min, propellmoment inkludert): sidebalansen som holder fartøyet på rett kjøl der, slik oppgaven bedømmer rull (§5.3.3).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="139"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="140"/>
         <source>%1 is a constant %2 %3 everywhere (all phases, depths and speeds)</source>
         <translation>%1 er konstant %2 %3 overalt (alle faser, dybder og hastigheter)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="140"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="141"/>
         <source>%1 grows %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="141"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
         <source>%1 shrinks %2 %3 per %4 (%5 %3, %6 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 (%5 %3, %6 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="142"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="143"/>
         <source>%1 grows %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 vokser %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="143"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="144"/>
         <source>%1 shrinks %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % of its variance)</source>
         <translation>%1 avtar %2 %3 per %4 %5 %6 %7 (%8 %3, %9 % av variansen)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="144"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="145"/>
         <source>%1 concentrates at %2 %3 (mean %4 %5 against %6 overall)</source>
         <translation>%1 samler seg ved %2 %3 (middel %4 %5 mot %6 totalt)</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="145"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
         <source>%1: no factor of the log explains it</source>
         <translation>%1: ingen faktor i loggen forklarer det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="146"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
         <source>AUV rigid-body model of the simulator (Fossen form) on smoothed logged states; simulation: replay of the logged commands through the model&apos;s autopilot; ballast state: net buoyancy and CG x/y</source>
         <translation>AUV-stivlegememodellen fra simulatoren (Fossen-form) på glattede loggede tilstander; simulering: de loggede kommandoene spilt av gjennom modellens autopilot; ballasttilstand: netto oppdrift og CG x/y</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="147"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="148"/>
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state and Cd0</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand og Cd0</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="148"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="149"/>
         <source>steady glide (Merckelbach et al. 2010) on vertical velocity from the %1; ballast state: net buoyancy at the mean operating state, Cd0 and the lift slope</source>
         <translation>stabil gliding (Merckelbach et al. 2010) på vertikal hastighet fra %1; ballasttilstand: netto oppdrift ved middels driftstilstand, Cd0 og løftestigningstallet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="252"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="253"/>
         <source>bringing the CG back towards the CB fore-aft</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="253"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="254"/>
         <source>balanced by the other points&apos; fore-aft shares</source>
         <translation>balansert av de andre punktenes andeler forut-akter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="254"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="255"/>
         <source>bringing the CG back towards the CB sideways</source>
         <translation>som flytter tyngdepunktet tilbake mot oppdriftssenteret sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="255"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="256"/>
         <source>balanced by the other points&apos; sideways shares</source>
         <translation>balansert av de andre punktenes andeler sideveis</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="316"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="317"/>
         <source>%1: %2 (%3; %4 → %5 of %6).</source>
         <translation>%1: %2 (%3; %4 → %5 av %6).</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="325"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="326"/>
         <source>%1 is largest during %2: mean %3 %4</source>
         <translation>%1 er størst under %2: middel %3 %4</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="340"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="341"/>
         <source>; independent of %1</source>
         <translation>; uavhengig av %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="235"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="303"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="236"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="304"/>
         <source> and </source>
         <translation> og </translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="239"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="311"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="240"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="312"/>
         <source>remove %1, then add %2</source>
         <translation>fjern %1, legg så til %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="241"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="313"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="242"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="314"/>
         <source>remove %1</source>
         <translation>fjern %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="243"/>
-        <location filename="../../ui/wizard/advice_text.cpp" line="315"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="244"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="316"/>
         <source>add %1</source>
         <translation>legg til %1</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="245"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="246"/>
         <source>%1 mm forward</source>
         <translation>%1 mm forover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="246"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="247"/>
         <source>%1 mm aft</source>
         <translation>%1 mm akterover</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="248"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="249"/>
         <source>%1 mm to starboard</source>
         <translation>%1 mm mot styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="249"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="250"/>
         <source>%1 mm to port</source>
         <translation>%1 mm mot babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="258"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="259"/>
         <source>%1: %2 (%3), which lowers the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som senker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="259"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="260"/>
         <source>%1: %2 (%3), which raises the net buoyancy by %4 and moves the CG %5 and %6, %7.</source>
         <translation>%1: %2 (%3), som øker netto oppdrift med %4 og flytter tyngdepunktet %5 og %6, %7.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="73"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="74"/>
         <source>The vehicle stays %1 heavy even with every removable piece out: it needs added buoyancy or a lighter payload.</source>
         <translation>Fartøyet er fortsatt %1 for tungt selv med alle lodd som kan tas ut, ute: det trenger mer oppdrift eller lettere nyttelast.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="74"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="75"/>
         <source>The search stopped at its limit: this is the best change found, not a proved optimum.</source>
         <translation>Søket stoppet ved grensen sin: dette er den beste endringen som ble funnet, ikke et bevist optimum.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="75"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="76"/>
         <source>The CG is not below the CB after the change: the vehicle would capsize. Check BG and the payload.</source>
         <translation>Tyngdepunktet er ikke under oppdriftssenteret etter endringen: fartøyet ville kantre. Kontroller BG og nyttelasten.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="116"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="117"/>
         <source>The thesis mapping leaves the vehicle %1 heavy.</source>
         <translation>Oppgavens fordeling gjør fartøyet %1 for tungt.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="133"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="134"/>
         <source>The net buoyancy uncertainty (%1 kg) is too wide for the %2 kg band: add the calibration manoeuvre to the next mission (%3 short leg(s)); with this log alone it would bring the uncertainty to about %4 kg.</source>
         <translation>Usikkerheten i netto oppdrift (%1 kg) er for stor for båndet på %2 kg: legg kalibreringsmanøveren til neste oppdrag (%3 korte etapper); med denne loggen alene ville den bringe usikkerheten ned til omtrent %4 kg.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="134"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="135"/>
         <source>This move is also a calibration: flown after it and analysed with the last log as history (the known change of mass and moment between them), the next mission&apos;s survey should tell the net buoyancy to about ±%1 kg and CG x to about ±%2 mm, enough for a second move into the band.</source>
         <translation>Denne flyttingen er også en kalibrering: fløyet etter den og analysert med siste logg som historikk (den kjente endringen i masse og moment mellom dem), bør neste oppdrags kartlegging gi netto oppdrift til omtrent ±%1 kg og CG x til omtrent ±%2 mm, nok til at en ny flytting lander i båndet.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="136"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="137"/>
         <source>This move is also a calibration, but flown after it and analysed with the last log as history the next mission&apos;s survey would still leave the net buoyancy at about ±%1 kg (CG x about ±%2 mm), too wide for the band: fly the calibration manoeuvre as well.</source>
         <translation>Denne flyttingen er også en kalibrering, men fløyet etter den og analysert med siste logg som historikk ville neste oppdrags kartlegging fortsatt gi netto oppdrift til omtrent ±%1 kg (CG x omtrent ±%2 mm), for usikkert for båndet: fly kalibreringsmanøveren også.</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="271"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="272"/>
         <source>The net buoyancy band %1 to %2 cannot be reached with this kit; best %3</source>
         <translation>Båndet for netto oppdrift %1 til %2 kan ikke nås med dette vektsettet; beste er %3</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="273"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="274"/>
         <source>The pitch band ±%1 cannot be reached with this kit (at rest); best %2</source>
         <translation>Stampbåndet ±%1 kan ikke nås med dette vektsettet (i ro); beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="275"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="276"/>
         <source>The roll band ±%1 cannot be reached with this kit while pitch stays in band; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet mens stampen holdes i båndet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="277"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="278"/>
         <source>The roll band ±%1 cannot be reached with this kit; best %2</source>
         <translation>Rullbåndet ±%1 kan ikke nås med dette vektsettet; beste er %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="279"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="280"/>
         <source>; flying level at %1 m/s it pitches %2°, inside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, innenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="280"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="281"/>
         <source>; flying level at %1 m/s it pitches %2°, outside the band</source>
         <translation>; i planflyging ved %1 m/s stamper det %2°, utenfor båndet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="283"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="284"/>
         <source>; out of reach whatever the piece sizes: the points&apos; capacities, the installed pieces and the higher priorities limit it</source>
         <translation>; utenfor rekkevidde uansett loddstørrelser: punktenes kapasitet, loddene som er montert og de høyere prioritetene begrenser det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="286"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="287"/>
         <source>; a %1 piece would reach it</source>
         <translation>; et lodd på %1 ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="288"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="289"/>
         <source>; no single extra piece size tried (%1) would reach it</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="290"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="291"/>
         <source>; no single extra piece size tried (%1) would reach it (some were not searched to the end)</source>
         <translation>; ingen enkelt ekstra loddstørrelse som ble prøvd (%1) ville nådd det (noen ble ikke søkt helt ut)</translation>
     </message>
@@ -746,262 +751,262 @@
 <context>
     <name>AdviceWord</name>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
         <source>operating</source>
         <translation>operasjonsdybden</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="153"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
         <source>deepest</source>
         <translation>største dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
         <source>surface</source>
         <translation>overflaten</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="154"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
         <source>transit</source>
         <translation>transitt</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="155"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="156"/>
         <source>none</source>
         <translation>ingen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
         <source>depth command steps</source>
         <translation>trinn i dybdekommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="157"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
         <source>pitch command steps</source>
         <translation>trinn i stampkommandoen</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
         <source>speed changes</source>
         <translation>fartsendringer</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="158"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="159"/>
         <source>propeller speed changes</source>
         <translation>endringer i propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
         <source>vertical-velocity error</source>
         <translation>avvik i vertikal hastighet</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="161"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
         <source>vertical-force error</source>
         <translation>avvik i vertikal kraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
         <source>pitch-moment error</source>
         <translation>avvik i stampmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="162"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
         <source>roll-moment error</source>
         <translation>avvik i rullmoment</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
         <source>depth error</source>
         <translation>dybdeavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="163"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
         <source>pitch error</source>
         <translation>stampavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
         <source>roll error</source>
         <translation>rullavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="164"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
         <source>speed error</source>
         <translation>fartsavvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
         <source>surge-force error</source>
         <translation>avvik i langskipskraft</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="165"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
         <source>error</source>
         <translation>avvik</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
         <source>pressure</source>
         <translation>trykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="166"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
         <source>temperature</source>
         <translation>temperatur</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
         <source>time</source>
         <translation>tid</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="167"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
         <source>speed</source>
         <translation>fart</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="169"/>
         <source>propeller speed</source>
         <translation>propellturtall</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="168"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="169"/>
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="169"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
         <source>time since an actuator change</source>
         <translation>tid siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="169"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
         <source>100 dbar</source>
         <translation>100 dbar</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="170"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
         <source>degC</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="172"/>
         <source>hour</source>
         <translation>time</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="171"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="172"/>
         <source>0.1 m/s</source>
         <translation>0,1 m/s</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="172"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="173"/>
         <source>100 rpm</source>
         <translation>100 o/min</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="172"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="173"/>
         <source>10 deg of pitch</source>
         <translation>10° stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="173"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="174"/>
         <source>10 s since an actuator change</source>
         <translation>10 s siden en ror- eller turtallsendring</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="174"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="175"/>
         <source>below</source>
         <translation>under</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="174"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="175"/>
         <source>above</source>
         <translation>over</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="175"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="176"/>
         <source>after</source>
         <translation>etter</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="175"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="176"/>
         <source>before</source>
         <translation>før</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="176"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="177"/>
         <source>within</source>
         <translation>innenfor</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="177"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="178"/>
         <source>surfaces</source>
         <translation>overflateopphold</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="177"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="178"/>
         <source>dives</source>
         <translation>dykk</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="178"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="179"/>
         <source>climbs</source>
         <translation>stigninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="178"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="179"/>
         <source>levels</source>
         <translation>planflyvninger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="179"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="180"/>
         <source>turns</source>
         <translation>svinger</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="181"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="182"/>
         <source>starboard</source>
         <translation>styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="181"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="182"/>
         <source>port</source>
         <translation>babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="182"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="183"/>
         <source>port to the starboard</source>
         <translation>babord til styrbord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="182"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="183"/>
         <source>starboard to the port</source>
         <translation>styrbord til babord</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="183"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="184"/>
         <source>lower to the upper</source>
         <translation>nedre til øvre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="183"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="184"/>
         <source>upper to the lower</source>
         <translation>øvre til nedre</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="184"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="185"/>
         <source>lowers</source>
         <translation>senker</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/advice_text.cpp" line="184"/>
+        <location filename="../../ui/wizard/advice_text.cpp" line="185"/>
         <source>raises</source>
         <translation>hever</translation>
     </message>
@@ -2009,86 +2014,86 @@
 <context>
     <name>auv::ui::DeviationPlotsPage</name>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="63"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="65"/>
         <location filename="../../ui/widgets/segment_table.cpp" line="41"/>
         <source>Depth [m]</source>
         <translation>Dybde [m]</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="63"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="65"/>
         <location filename="../../ui/widgets/segment_table.cpp" line="41"/>
         <source>Pitch [°]</source>
         <translation>Stamp [°]</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="63"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="65"/>
         <location filename="../../ui/widgets/segment_table.cpp" line="41"/>
         <source>Roll [°]</source>
         <translation>Rull [°]</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="97"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="99"/>
         <source>measured</source>
         <translation>målt</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="97"/>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="301"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="99"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="320"/>
         <source>commanded</source>
         <translation>kommandert</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="111"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="113"/>
         <source>time since start [min]</source>
         <translation>tid siden start [min]</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="149"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="151"/>
         <source>&amp;Whole log</source>
         <translation>Hele &amp;loggen</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="149"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="151"/>
         <source>Show the whole log in all three charts.</source>
         <translation>Vis hele loggen i alle tre diagrammene.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="227"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="229"/>
         <source>commanded depth</source>
         <translation>kommandert dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="228"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="230"/>
         <source>commanded pitch</source>
         <translation>kommandert stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="237"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="254"/>
         <source>Preparing the plots of %1 rows…</source>
         <translation>Forbereder plottene av %1 rader…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="252"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="269"/>
         <source>Net buoyancy: being computed…</source>
         <translation>Netto oppdrift: beregnes…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="268"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="286"/>
         <source>Analysing the log: steady segments, depth, pitch and roll errors, net buoyancy and centre of gravity…</source>
         <translation>Analyserer loggen: stabile segmenter, dybde-, stamp- og rullavvik, netto oppdrift og tyngdepunkt…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="303"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="322"/>
         <source>not in this log: %1</source>
         <translation>ikke i denne loggen: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="313"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="332"/>
         <source>%1: %2 samples in the three charts over %3 min.</source>
         <translation>%1: %2 målepunkter i de tre diagrammene over %3 min.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="328"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="347"/>
         <source>The next page&apos;s model check fits the whole log, which may tell the net buoyancy where the steady flight cannot.</source>
         <translation>Modellsjekken på neste side tilpasser hele loggen, og kan kanskje gi netto oppdrift der den stødige flyvningen ikke kan.</translation>
     </message>
@@ -2098,12 +2103,12 @@
         <translation>i.t.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="60"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="62"/>
         <source>Analysis: depth, pitch and roll as flown</source>
         <translation>Analyse: dybde, stamp og rull slik fartøyet gikk</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="61"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="63"/>
         <source>Shaded: the steady segments the analysis used. Wheel or +/-: zoom; drag or arrows: move; double-click: whole log.</source>
         <translation>Skyggelagt: de stabile segmentene analysen brukte. Hjul eller +/-: zoom; dra eller piltaster: flytt; dobbeltklikk: hele loggen.</translation>
     </message>
@@ -2138,27 +2143,27 @@
         <translation>Et dykk eller en stigning utelatt fra kalibreringen: balansen fra de andre etappene forklarer det ikke.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="139"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="141"/>
         <source>Steady &amp;segments used</source>
         <translation>Brukte stabile &amp;segmenter</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="150"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="152"/>
         <source>Export &amp;PNG…</source>
         <translation>Eksporter &amp;PNG…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="150"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="152"/>
         <source>Save the three charts as they are shown as a PNG image.</source>
         <translation>Lagre de tre diagrammene slik de vises, som PNG-bilde.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="151"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="153"/>
         <source>Export &amp;CSV…</source>
         <translation>Eksporter &amp;CSV…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="152"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="154"/>
         <source>Save every logged sample of the plotted channels within the visible time window as a mission-log CSV (not the thinned-out points drawn).</source>
         <translation>Lagre alle loggede verdier for de viste kanalene i det synlige tidsvinduet som misjonslogg-CSV (ikke de uttynnede punktene som tegnes).</translation>
     </message>
@@ -2173,7 +2178,7 @@
         <translation>Netto oppdrift: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="334"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="353"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="102"/>
         <source> kg</source>
         <translation> kg</translation>
@@ -2219,14 +2224,14 @@
         <translation>Avvik (95 %): dybde %1 · stamp %2 · rull %3</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="360"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="379"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="118"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="121"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="360"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="379"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="118"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="119"/>
         <source>°</source>
@@ -2283,67 +2288,67 @@
         <translation>Hvert stabile glid analysen brukte (tid i minutter): middeldybde og -stamp, og rull ± 95 %-intervallet. Klikk på en rad for å zoome til den.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="350"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="369"/>
         <source>Point at a chart to read the time and the values there.</source>
         <translation>Pek på et diagram for å lese av tiden og verdiene der.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="359"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="378"/>
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="359"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="378"/>
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="359"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="378"/>
         <source>roll</source>
         <translation>rull</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="364"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="383"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="364"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="383"/>
         <source>%1 %2 (command %3)</source>
         <translation>%1 %2 (ønsket %3)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="366"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="385"/>
         <source>&lt;b&gt;%1 min&lt;/b&gt;: %2</source>
         <translation>&lt;b&gt;%1 min&lt;/b&gt;: %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="486"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="505"/>
         <source>Could not write %1: check the folder and its permissions.</source>
         <translation>Kunne ikke skrive %1: sjekk mappen og tilgangen til den.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="503"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="522"/>
         <source>Not exported: %1</source>
         <translation>Ikke eksportert: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="509"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="528"/>
         <source>Export the charts</source>
         <translation>Eksporter diagrammene</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="509"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="528"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="515"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="534"/>
         <source>Export the plotted data</source>
         <translation>Eksporter de viste dataene</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="515"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="534"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-filer (*.csv)</translation>
     </message>
@@ -2353,7 +2358,7 @@
         <translation>CG − CB: &lt;b&gt;%1&lt;/b&gt; (se merknadene)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="333"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="352"/>
         <source>This log&apos;s analysis alone: net buoyancy %1.</source>
         <translation>Analysen av denne loggen alene: netto oppdrift %1.</translation>
     </message>

@@ -154,10 +154,23 @@ TEST(ModelCheckCli, AcceptIntoAConfigurationThenPlanThenTheNextMissionCalibrates
   const std::size_t at = sim2.out.find("CG - CB x ");
   ASSERT_NE(at, std::string::npos) << sim2.out;
   const double cg_x_truth_mm = std::stod(sim2.out.substr(at + 10));
+  // analyze --config: the same joint calibration (pieces from the history),
+  // read only: the history's latest analysis stays mission 1's.
+  r = runCli("analyze --vehicle hugin1000 --log " + log2 + " --config 7-1-1 --history " + h + " --json " + tmp("flow_an2.json"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json an2 = readJson(tmp("flow_an2.json"));
+  const auto unknown = runCli("analyze --vehicle hugin1000 --log " + log2 + " --config 9-9-9 --history " + h);
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.err.find("'9-9-9' is not in the history"), std::string::npos) << unknown.err;
+  EXPECT_GT(an2["details"]["auv_estimate"].value("history_segments_used", 0), 0) << an2["notes"].dump();
+  ASSERT_EQ(an2["details"]["installed_kg"].size(), after.size());
+  for (std::size_t i = 0; i < after.size(); ++i)  // what the accepted plan installed
+    EXPECT_NEAR(an2["details"]["installed_kg"][i].get<double>(), before[i] + after[i], 1e-6) << i;
   r = runCli("model-check --vehicle hugin1000 --log " + log2 + " --accept --config 7-1-1 --history " + h +
              " --out-profile " + tmp("flow.model-check.json") + " --json " + tmp("flow_mc2.json"));
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json mc2 = readJson(tmp("flow_mc2.json"));
+  EXPECT_NEAR(an2["net_buoyancy_kg"].get<double>(), mc2["net_buoyancy_kg"].get<double>(), 1e-6);
   bool joint = false;
   for (const auto& n : mc2["notes"])
     joint = joint || n.get<std::string>().find("steady segments of earlier missions") != std::string::npos;

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/analysis_messages.h"
 #include "analysis/mission_analysis.h"
 #include "common/input_error.h"
 #include "plot/envelope_decimation.h"
@@ -30,6 +31,7 @@
 #include "widgets/linked_chart_view.h"
 #include "wizard/operator_wizard.h"
 #include "wizard/pre_mission_inputs.h"
+#include "workflow/history_calibration.h"
 
 namespace auv::ui {
 namespace {
@@ -230,6 +232,21 @@ QString channelWords(const char* name) {
 }
 }  // namespace
 
+std::optional<Message> DeviationPlotsPage::addHistoryCalibration(analysis::AnalysisOptions& o) const {
+  // A configuration from the history: its latest analysed mission and the
+  // known weight change since calibrate with this log (as model-check
+  // --config does). Read here, on the wizard's thread, which owns the store.
+  auto* w = qobject_cast<OperatorWizard*>(wizard());
+  HistoryStore* store = w ? w->history() : nullptr;
+  if (!store || state_.isGlider() || !state_.configuration_in_history || o.installed_kg.empty()) return std::nullopt;
+  try {
+    o.history = historyCalibrationMissions(*store, state_.configuration_id, *state_.vehicle, w->now(), o.log_name);
+  } catch (const std::exception& e) {  // a damaged row costs the calibration, not the analysis
+    return Message(analysis::msg::kHistoryUnreadable, {state_.configuration_id, e.what()});
+  }
+  return std::nullopt;
+}
+
 void DeviationPlotsPage::startWork() {
   const std::shared_ptr<const MissionLog> log = state_.log;
   // The plots first (quick), so the technician sees the log while the
@@ -264,13 +281,15 @@ void DeviationPlotsPage::startWork() {
     o.installed_kg = state_.mission_installed_kg;
   // BG from the configuration (roll test): CG y and roll become identifiable.
   if (state_.bg_mm && !state_.isGlider()) o.bg_m = *state_.bg_mm / 1000.0;
+  const std::optional<Message> history_problem = addHistoryCalibration(o);
   analysis_task_.start(
       tr("Analysing the log: steady segments, depth, pitch and roll errors, net buoyancy and centre of gravity…"),
-      [this, log, vehicle = *state_.vehicle, o]() -> BackgroundTask::Apply {
+      [this, log, vehicle = *state_.vehicle, o, history_problem]() -> BackgroundTask::Apply {
         auto result = std::make_shared<std::optional<analysis::AnalysisReport>>();
         QString error;
         try {
           *result = analysis::analyzeMission(*log, vehicle, o);
+          if (history_problem) (*result)->warnings.insert((*result)->warnings.begin(), *history_problem);
         } catch (const std::exception& e) {
           error = q(e.what());
         }

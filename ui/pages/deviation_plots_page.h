@@ -4,6 +4,8 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/mission_analysis.h"
+#include "common/message.h"
 #include "plot/plot_trace.h"
 #include "widgets/analysis_summary.h"
 #include "widgets/segment_table.h"
@@ -104,6 +106,9 @@ class DeviationPlotsPage : public QWizardPage {
     int buckets = 0;  // plot width the series were decimated for
   };
   void startWork();
+  // The history's calibration experiment into o (o.history); the warning
+  // when the history could not be read.
+  std::optional<Message> addHistoryCalibration(analysis::AnalysisOptions& o) const;
   void showTraces(std::array<std::array<PlotTrace, 2>, 3> traces);
   void showTrace(PlotData& p, std::size_t s, std::size_t buckets, double& lo, double& hi);
   void redecimate();

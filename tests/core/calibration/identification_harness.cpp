@@ -302,7 +302,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   a2.log_name = "identification, second mission";
   a2.installed_kg = after;
   a2.bg_m = f2.bg_m;
-  a2.history = {{rep.steady_segments, kInstalled}};
+  a2.history = {analysis::historyMissionOf(rep, kInstalled)};
   a2.use_transients = use_transients;
   a2.pitch_alignment_sigma_deg = pitch_alignment_sigma_deg;
   const analysis::AnalysisReport rep2 = analysis::analyzeMission(f2.log, profile_, a2);
@@ -313,6 +313,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   // The second move, planned from the jointly calibrated second mission.
   const nlohmann::json rj2 = analysis::toJson(rep2);
   const double net2_truth = rep2.density_kgm3.mean * profile_.hull.volumeAt(rep2.temperature_degC.mean, rep2.pressure_dbar.mean) - f2.mass_kg;
+  if (on_second_log) on_second_log(f2.log, a2, net2_truth, units::mToMm(f2.cg_x_m));
   kitBest(rj2, net2_truth, f2.cg_x_m, after, r.two);
   const auto [plan2, after2] = planFrom(rj2, after);
   r.two.planned_roll_deg = plan2.predicted.roll_deg;

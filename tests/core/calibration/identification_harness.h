@@ -13,6 +13,7 @@
 
 #include "analysis/analysis_report.h"
 #include "analysis/calibration_parameter.h"
+#include "analysis/mission_analysis.h"
 #include "discrepancy/synthetic_auv.h"
 #include "missionlog/mission_log.h"
 #include "sim/mission_plan.h"
@@ -94,6 +95,10 @@ class Harness {
   // reference water (net kg, CG x mm): the bench runs the model check there
   // (the harness itself stays free of it).
   std::function<void(const MissionLog&, const analysis::AnalysisReport&, double, double)> on_first_log;
+  // Called with the second mission's log (closed loop), the options it was
+  // analysed with (the first mission as history) and the truth at its
+  // report's reference water (net kg, CG x mm).
+  std::function<void(const MissionLog&, const analysis::AnalysisOptions&, double, double)> on_second_log;
 
  private:
   VehicleProfile profile_;      // nominal profile with its companion hydrodynamics: all the analysis gets

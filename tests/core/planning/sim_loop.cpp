@@ -98,7 +98,7 @@ SimMission SimHarness::fly(const SimLoopCase& c, const std::vector<double>& inst
 
   SimMission m;
   m.report = analysis::toJson(rep);
-  m.as_history = {rep.steady_segments, installed};
+  m.as_history = analysis::historyMissionOf(rep, installed);
   m.net_kg = meta(log, "truth_net_buoyancy_mean_kg");
   m.truth.mass_kg = meta(log, "truth_mass_kg");
   m.truth.cg_m = profile_.cb_m + units::mmToM(1.0) * Eigen::Vector3d(meta(log, "truth_cg_x_mm"), meta(log, "truth_cg_y_mm"),

@@ -1,0 +1,138 @@
+// The wizard's second mission of a configuration calibrates with the first
+// (issue 11 item 3), as `model-check --config` does: the first mission
+// analysed and saved to the history, the second imported with the pieces
+// moved; its analysis page says so and its estimate is the joint one. Oracles:
+// the same joint analysis run here through core, and the simulator's truth
+// in the log header.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <cmath>
+
+#include "analysis/mission_analysis.h"
+#include "history/store.h"
+#include "missionlog/interchange_csv.h"
+#include "pages/deviation_plots_page.h"
+#include "pages/log_import_page.h"
+#include "sim/mission_plan.h"
+#include "sim/sim_log.h"
+#include "sim/simulator.h"
+#include "typing.h"
+#include "ui_fixture.h"
+#include "vehicle/vehicle_catalog.h"
+#include "widgets/number_input.h"
+#include "wizard/demo_state.h"
+#include "wizard/history_save.h"
+#include "wizard/operator_wizard.h"
+#include "workflow/history_calibration.h"
+
+namespace auv::ui {
+using auv::testing::find;
+
+namespace {
+
+const std::string kExamples = std::string(AUV_RESOURCE_DIR) + "/examples/";
+const char* kInstalledFields[4] = {"installed_fore_starboard", "installed_fore_port", "installed_aft_starboard",
+                                   "installed_aft_port"};
+
+// The bundled ballast-error mission (3 kg light, 5 mm nose heavy, truth in
+// the header) flown with `installed` kg at the four points.
+void simulateMission(const std::vector<double>& installed, std::uint64_t seed, const std::string& out) {
+  const std::string plan_file = kExamples + "hugin1000_ballast_error.plan.json";
+  sim::MissionPlan plan = sim::loadMissionPlan(plan_file);
+  plan.installed_kg = installed;
+  plan.options.seed = seed;
+  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load(plan.vehicle);
+  const sim::SimVehicle sv = sim::loadSimVehicle(v, AUV_RESOURCE_DIR);
+  const sim::SimTrace tr = sim::simulate(sv.model, sv.autopilot, plan.water, sim::resolveScenario(plan, v), plan.options);
+  sim::writeSimulatedLog(tr, {v.id, "plan", plan_file, seed, sv.model.thruster_count, installed, {}}, out);
+}
+
+bool hasNote(const analysis::AnalysisReport& r, const char* id) {
+  for (const Message& n : r.notes)
+    if (n.id() == id) return true;
+  return false;
+}
+
+}  // namespace
+
+class HistoryCalibrationWizard : public auv::testing::UiTest {
+ protected:
+  // A post-mission session of the demo configuration (in the history) with
+  // `log_file` imported and `installed` typed into the installed fields;
+  // returns the wizard on the analysis page.
+  std::unique_ptr<OperatorWizard> analyse(const std::string& log_file, const std::vector<double>& installed) {
+    WizardState s = makeDemoState(AUV_RESOURCE_DIR);
+    s.configuration_in_history = true;
+    s.mode = SessionMode::kPostMission;
+    auto wiz = std::make_unique<OperatorWizard>(std::move(s));
+    wiz->setClock(fixedNow);
+    wiz->setAutosaveEnabled(false);
+    wiz->resize(1000, 760);
+    wiz->show();
+    wiz->next();
+    wiz->next();
+    EXPECT_EQ(wiz->currentId(), OperatorWizard::kLogImport);
+    auto* import = qobject_cast<LogImportPage*>(wiz->currentPage());
+    import->startImport(QString::fromStdString(log_file));
+    QElapsedTimer t;
+    t.start();
+    while (import->job().running() && t.elapsed() < 60000) QApplication::processEvents(QEventLoop::AllEvents, 20);
+    QApplication::processEvents();
+    for (std::size_t i = 0; i < 4; ++i)
+      auv::testing::typeInto(find<NumberInput>(*wiz, kInstalledFields[i]), QString::number(installed[i]));
+    wiz->next();
+    EXPECT_EQ(wiz->currentId(), OperatorWizard::kDeviationPlots);
+    return wiz;
+  }
+};
+
+TEST_F(HistoryCalibrationWizard, TheSecondMissionCalibratesWithTheFirst) {
+  {
+    HistoryStore store(path("history.sqlite").toStdString());
+    seedDemoHistory(store, AUV_RESOURCE_DIR, makeUtc(2026, 4, 30, 9, 0, 0));
+  }
+  const std::vector<double> first{7.2, 7.2, 25.2, 25.2}, second{14.4, 14.4, 19.2, 19.2};
+  const std::string log1 = path("mission1.csv").toStdString(), log2 = path("mission2.csv").toStdString();
+  simulateMission(first, 21, log1);
+  simulateMission(second, 22, log2);
+
+  analysis::AnalysisReport alone;
+  {
+    auto wiz = analyse(log1, first);
+    ASSERT_TRUE(wiz->state().analysis.has_value());
+    alone = *wiz->state().analysis;
+    EXPECT_FALSE(hasNote(alone, "analysis.history_calibration"));  // nothing analysed before it
+    HistoryStore store(path("history.sqlite").toStdString());
+    saveMissionToHistory(store, wiz->state(), fixedNow());
+  }
+  auto wiz = analyse(log2, second);
+  ASSERT_TRUE(wiz->state().analysis.has_value());
+  const analysis::AnalysisReport& joint = *wiz->state().analysis;
+  EXPECT_TRUE(hasNote(joint, "analysis.history_calibration"));
+  EXPECT_GT(joint.details["auv_estimate"].value("history_segments_used", 0), 0);
+  EXPECT_NE(find<QLabel>(*wiz, "analysis_notes")->text().indexOf("earlier missions of this configuration"), -1)
+      << find<QLabel>(*wiz, "analysis_notes")->text().toStdString();
+
+  // The same joint analysis through core, and the truth.
+  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("hugin1000");
+  const MissionLog log = readInterchangeCsv(log2);
+  analysis::AnalysisOptions o;
+  o.log_name = "mission2.csv";
+  o.installed_kg = second;
+  HistoryStore store(path("history.sqlite").toStdString());
+  o.history = historyCalibrationMissions(store, wiz->state().configuration_id, v, fixedNow(), o.log_name);
+  ASSERT_EQ(o.history.size(), 1u);
+  EXPECT_EQ(o.history[0].installed_kg, first);
+  const analysis::AnalysisReport core = analysis::analyzeMission(log, v, o);
+  EXPECT_NEAR(joint.net_buoyancy_kg.value, core.net_buoyancy_kg.value, 1e-9);
+  EXPECT_NEAR(joint.cg_x_mm.value, core.cg_x_mm.value, 1e-9);
+  const double truth = std::stod(*log.metadataValue("truth_net_buoyancy_kg"));
+  EXPECT_LE(std::abs(joint.net_buoyancy_kg.value - truth), 2.0 * joint.net_buoyancy_kg.sigma + 0.01)
+      << joint.net_buoyancy_kg.value << " +- " << joint.net_buoyancy_kg.sigma << " truth " << truth;
+  EXPECT_LT(joint.net_buoyancy_kg.sigma, alone.net_buoyancy_kg.sigma);
+}
+
+}  // namespace auv::ui
