@@ -2038,7 +2038,7 @@
     </message>
     <message>
         <location filename="../../ui/pages/deviation_plots_page.cpp" line="99"/>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="320"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="322"/>
         <source>commanded</source>
         <translation>kommandert</translation>
     </message>
@@ -2078,22 +2078,22 @@
         <translation>Netto oppdrift: beregnes…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="286"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="288"/>
         <source>Analysing the log: steady segments, depth, pitch and roll errors, net buoyancy and centre of gravity…</source>
         <translation>Analyserer loggen: stabile segmenter, dybde-, stamp- og rullavvik, netto oppdrift og tyngdepunkt…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="322"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="324"/>
         <source>not in this log: %1</source>
         <translation>ikke i denne loggen: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="332"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="334"/>
         <source>%1: %2 samples in the three charts over %3 min.</source>
         <translation>%1: %2 målepunkter i de tre diagrammene over %3 min.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="347"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="349"/>
         <source>The next page&apos;s model check fits the whole log, which may tell the net buoyancy where the steady flight cannot.</source>
         <translation>Modellsjekken på neste side tilpasser hele loggen, og kan kanskje gi netto oppdrift der den stødige flyvningen ikke kan.</translation>
     </message>
@@ -2178,7 +2178,7 @@
         <translation>Netto oppdrift: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="353"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="355"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="102"/>
         <source> kg</source>
         <translation> kg</translation>
@@ -2224,14 +2224,14 @@
         <translation>Avvik (95 %): dybde %1 · stamp %2 · rull %3</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="379"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="381"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="118"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="121"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="379"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="381"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="118"/>
         <location filename="../../ui/widgets/analysis_summary.cpp" line="119"/>
         <source>°</source>
@@ -2288,67 +2288,67 @@
         <translation>Hvert stabile glid analysen brukte (tid i minutter): middeldybde og -stamp, og rull ± 95 %-intervallet. Klikk på en rad for å zoome til den.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="369"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="371"/>
         <source>Point at a chart to read the time and the values there.</source>
         <translation>Pek på et diagram for å lese av tiden og verdiene der.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="378"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="380"/>
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="378"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="380"/>
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="378"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="380"/>
         <source>roll</source>
         <translation>rull</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="383"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="385"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="383"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="385"/>
         <source>%1 %2 (command %3)</source>
         <translation>%1 %2 (ønsket %3)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="385"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="387"/>
         <source>&lt;b&gt;%1 min&lt;/b&gt;: %2</source>
         <translation>&lt;b&gt;%1 min&lt;/b&gt;: %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="505"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="507"/>
         <source>Could not write %1: check the folder and its permissions.</source>
         <translation>Kunne ikke skrive %1: sjekk mappen og tilgangen til den.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="522"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="524"/>
         <source>Not exported: %1</source>
         <translation>Ikke eksportert: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="528"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="530"/>
         <source>Export the charts</source>
         <translation>Eksporter diagrammene</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="528"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="530"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="534"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="536"/>
         <source>Export the plotted data</source>
         <translation>Eksporter de viste dataene</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="534"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="536"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-filer (*.csv)</translation>
     </message>
@@ -2358,7 +2358,7 @@
         <translation>CG − CB: &lt;b&gt;%1&lt;/b&gt; (se merknadene)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/deviation_plots_page.cpp" line="352"/>
+        <location filename="../../ui/pages/deviation_plots_page.cpp" line="354"/>
         <source>This log&apos;s analysis alone: net buoyancy %1.</source>
         <translation>Analysen av denne loggen alene: netto oppdrift %1.</translation>
     </message>
@@ -3127,17 +3127,17 @@
         <translation>Velg loggen fra oppdraget, eller slipp filen på denne siden. Formatet gjenkjennes fra innholdet, ikke filnavnet.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="396"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="416"/>
         <source>Installed masses taken from the log&apos;s configuration line; check them below.</source>
         <translation>Monterte masser hentet fra loggens konfigurasjonslinje; kontroller dem nedenfor.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="408"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="428"/>
         <source>Nothing installed?</source>
         <translation>Ingenting montert?</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="409"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="429"/>
         <source>Every installed mass is 0 kg. If adjustment weights were in the vehicle during this mission, enter them under &quot;Adjustment weight installed during this mission&quot; first: the analysis would otherwise put their weight into the vehicle&apos;s own balance. Analyse with nothing installed?</source>
         <translation>Alle monterte masser er 0 kg. Hvis justeringsvekter satt i fartøyet under dette oppdraget, før dem først inn under «Justeringsvekt montert under dette oppdraget»: ellers legger analysen vekten deres inn i fartøyets egen balanse. Analysere med ingenting montert?</translation>
     </message>
@@ -3152,107 +3152,127 @@
         <translation>Les filen som er angitt til venstre.</translation>
     </message>
     <message>
+        <location filename="../../ui/pages/log_import_page.cpp" line="104"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" line="105"/>
+        <source>How closely the pitch sensor reads the hull&apos;s pitch, from a level check on the dock (the hull level, the reading compared). The analysis finds the sensor&apos;s offset from the log either way; a checked sensor lets it narrow the net buoyancy and CG. Leave &quot;not checked&quot; when nobody checked it: the analysis then allows up to a degree.</source>
+        <translation>Hvor nøyaktig stampesensoren leser skrogets stamp, fra en vaterkontroll på kaia (skroget i vater, avlesningen sammenlignet). Analysen finner sensorens avvik fra loggen uansett; en kontrollert sensor lar den snevre inn netto oppdrift og tyngdepunkt. La stå «ikke kontrollert» når ingen har kontrollert den: analysen tillater da opptil en grad.</translation>
+    </message>
+    <message>
         <location filename="../../ui/pages/log_import_page.cpp" line="109"/>
+        <source>not checked</source>
+        <translation>ikke kontrollert</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" line="115"/>
+        <source>&amp;Pitch sensor level check, within ±</source>
+        <translation>&amp;Stampesensor kontrollert i vater, innenfor ±</translation>
+    </message>
+    <message>
+        <location filename="../../ui/pages/log_import_page.cpp" line="125"/>
         <source>How much of the file has been read.</source>
         <translation>Hvor mye av filen som er lest.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="110"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="126"/>
         <source>&amp;Cancel import</source>
         <translation>&amp;Avbryt import</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="110"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="126"/>
         <source>Stop reading; nothing of this file is kept.</source>
         <translation>Stopp lesingen; ingenting fra denne filen beholdes.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="112"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="128"/>
         <source>↓ Drop a log file here ↓</source>
         <translation>↓ Slipp en loggfil her ↓</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="127"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="143"/>
         <source>The first problems of each kind, with the line and what to do.</source>
         <translation>De første problemene av hver type, med linje og hva du bør gjøre.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="130"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="146"/>
         <source>Log file:</source>
         <translation>Loggfil:</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="157"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="175"/>
         <source>Cancelling…</source>
         <translation>Avbryter…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="222"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="242"/>
         <source>Mission log</source>
         <translation>Oppdragslogg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="270"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="290"/>
         <source>Reading %1…</source>
         <translation>Leser %1…</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="294"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="314"/>
         <source>Read completely.</source>
         <translation>Ferdig lest.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="305"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="325"/>
         <source>Import cancelled at %1 %; nothing of this file was kept.</source>
         <translation>Importen ble avbrutt ved %1 %; ingenting fra denne filen ble beholdt.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="309"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="329"/>
         <source>Cannot read this file: %1</source>
         <translation>Kan ikke lese denne filen: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="356"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="376"/>
         <source>depth</source>
         <translation>dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="357"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="377"/>
         <source>commanded depth</source>
         <translation>kommandert dybde</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="358"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="378"/>
         <source>pitch</source>
         <translation>stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="359"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="379"/>
         <source>commanded pitch</source>
         <translation>kommandert stamp</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="360"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="380"/>
         <source>roll</source>
         <translation>rull</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="365"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="385"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="368"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="388"/>
         <source>&lt;b&gt;%1&lt;/b&gt; (%2): &lt;b&gt;%3 rows&lt;/b&gt; × &lt;b&gt;%4 channels&lt;/b&gt; over %5 h. Skipped %6 rows, merged %7, blanked %8 cells.&lt;br&gt;Plotted channels: %9&lt;br&gt;%10</source>
         <translation>&lt;b&gt;%1&lt;/b&gt; (%2): &lt;b&gt;%3 rader&lt;/b&gt; × &lt;b&gt;%4 kanaler&lt;/b&gt; over %5 t. Hoppet over %6 rader, slo sammen %7, tømte %8 celler.&lt;br&gt;Plottede kanaler: %9&lt;br&gt;%10</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="378"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="398"/>
         <source>Nothing was skipped or changed.</source>
         <translation>Ingenting ble hoppet over eller endret.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="378"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="398"/>
         <source>Why: %1.</source>
         <translation>Hvorfor: %1.</translation>
     </message>
@@ -3292,42 +3312,42 @@
         <translation>Vektstykkene som satt i fartøyet mens det gikk denne loggen, per punkt. Analysen trenger vekten fartøyet gikk med.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="179"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="198"/>
         <source> kg</source>
         <translation> kg</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="180"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="199"/>
         <source>Kit pieces at %1 during the logged mission, kg (what was installed before it flew, not a planned change).</source>
         <translation>Vektstykker ved %1 under den loggede misjonen, kg (det som var montert før turen, ikke en planlagt endring).</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="223"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="243"/>
         <source>Mission logs (*.csv *.txt *.log *.dat *.asc *.dba *.nc *.gz *.dbd *.ebd *.sbd *.tbd *.mbd *.nbd *.dcd *.ecd *.scd *.tcd *.mcd *.ncd);;All files (*)</source>
         <translation>Oppdragslogger (*.csv *.txt *.log *.dat *.asc *.dba *.nc *.gz *.dbd *.ebd *.sbd *.tbd *.mbd *.nbd *.dcd *.ecd *.scd *.tcd *.mcd *.ncd);;Alle filer (*)</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="252"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="272"/>
         <source>The saved column mapping is damaged and was not used: %1</source>
         <translation>Den lagrede kolonnekoblingen er skadet og ble ikke brukt: %1</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="270"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="290"/>
         <source>%1 and %2 more</source>
         <translation>%1 og %2 til</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="294"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="314"/>
         <source>Read completely with the column mapping.</source>
         <translation>Lest fullstendig med kolonnekoblingen.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="299"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="319"/>
         <source>Read, but no depth or pressure column was recognised: say which column is which.</source>
         <translation>Lest, men ingen dybde- eller trykkolonne ble gjenkjent: angi hvilken kolonne som er hva.</translation>
     </message>
     <message>
-        <location filename="../../ui/pages/log_import_page.cpp" line="339"/>
+        <location filename="../../ui/pages/log_import_page.cpp" line="359"/>
         <source>The mapping could not be saved: %1</source>
         <translation>Koblingen kunne ikke lagres: %1</translation>
     </message>
@@ -3646,12 +3666,12 @@
         <translation>Det du har skrevet inn i denne økten er ikke i historikken ennå. Det blir i den uferdige økten, som startsiden tilbyr å gjenoppta. Lukke likevel?</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/operator_wizard.cpp" line="203"/>
+        <location filename="../../ui/wizard/operator_wizard.cpp" line="204"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../../ui/wizard/operator_wizard.cpp" line="255"/>
+        <location filename="../../ui/wizard/operator_wizard.cpp" line="256"/>
         <source>Saved</source>
         <translation>Lagret</translation>
     </message>

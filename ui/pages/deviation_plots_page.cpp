@@ -281,6 +281,8 @@ void DeviationPlotsPage::startWork() {
     o.installed_kg = state_.mission_installed_kg;
   // BG from the configuration (roll test): CG y and roll become identifiable.
   if (state_.bg_mm && !state_.isGlider()) o.bg_m = *state_.bg_mm / 1000.0;
+  // A level check of the pitch sensor narrows the prior on its bias.
+  if (state_.pitch_alignment_sigma_deg) o.pitch_alignment_sigma_deg = *state_.pitch_alignment_sigma_deg;
   const std::optional<Message> history_problem = addHistoryCalibration(o);
   analysis_task_.start(
       tr("Analysing the log: steady segments, depth, pitch and roll errors, net buoyancy and centre of gravity…"),

@@ -101,6 +101,22 @@ LogImportPage::LogImportPage(WizardState& state) : state_(state) {
   installed_grid_ = new QGridLayout(installed_box_);
   installed_grid_->setContentsMargins(8, 4, 8, 4);
   installed_grid_->setVerticalSpacing(2);
+  alignment_ = makeNumber("pitch_alignment_sigma_deg", 0.0, kMaxPitchAlignmentDeg, 2, tr(" °"),
+                          tr("How closely the pitch sensor reads the hull's pitch, from a level check on the dock "
+                             "(the hull level, the reading compared). The analysis finds the sensor's offset from "
+                             "the log either way; a checked sensor lets it narrow the net buoyancy and CG. Leave "
+                             "\"not checked\" when nobody checked it: the analysis then allows up to a degree."));
+  alignment_->setSpecialValueText(tr("not checked"));
+  alignment_->setMinimumWidth(130);
+  error_ = makeErrorLabel();  // a field's problem on Next (OperatorWizard::validateCurrentPage)
+  alignment_row_ = new QWidget;
+  auto* arow = new QHBoxLayout(alignment_row_);
+  arow->setContentsMargins(8, 0, 8, 0);
+  auto* alabel = new QLabel(tr("&Pitch sensor level check, within ±"));
+  alabel->setBuddy(alignment_->lineEdit());
+  arow->addWidget(alabel);
+  arow->addWidget(alignment_);
+  arow->addStretch(1);
   progress_ = new QProgressBar;
   progress_->setObjectName("progress");
   progress_->setRange(0, 100);
@@ -141,6 +157,8 @@ LogImportPage::LogImportPage(WizardState& state) : state_(state) {
   lay->addLayout(prow);
   lay->addWidget(status_);
   lay->addWidget(installed_box_);
+  lay->addWidget(alignment_row_);
+  lay->addWidget(error_);
   lay->addWidget(summary_);
   lay->addWidget(problems_, 1);
   // Shown only with something in it: an empty white box under "Nothing was
@@ -164,6 +182,7 @@ void LogImportPage::buildInstalledInputs() {
   const std::string id = state_.vehicle ? state_.vehicle->id : std::string();
   // A glider's fit does not use it (its ballast state is fitted whole).
   installed_box_->setVisible(state_.vehicle && !state_.isGlider());
+  alignment_row_->setVisible(state_.vehicle && !state_.isGlider());
   if (id == installed_vehicle_ && installed_.size() == (state_.vehicle ? state_.vehicle->points.size() : 0u)) return;
   installed_vehicle_ = id;
   for (NumberInput* sb : installed_) delete sb;
@@ -206,6 +225,7 @@ void LogImportPage::initializePage() {
                                     : state_.crane.installed_kg.size() == n ? state_.crane.installed_kg
                                                                             : std::vector<double>(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) installed_[i]->setValue(from[i]);
+  alignment_->setValue(state_.pitch_alignment_sigma_deg.value_or(0.0));
   path_->setText(q(state_.log_file));
   // A resumed or demo session names its log but has not read it yet.
   if (!state_.log && !state_.log_file.empty() && !job_.running()) {
@@ -412,9 +432,13 @@ bool LogImportPage::validatePage() {
                 true))
       return false;
   }
+  error_->clear();  // a field's problem (OperatorWizard::validateCurrentPage) is fixed once we get here
   // The analysis and the model check follow from the log and this input;
   // the next pages compute them again.
   state_.mission_installed_kg = installedKg();
+  const double checked = alignment_->value();
+  state_.pitch_alignment_sigma_deg =
+      checked >= kMinPitchAlignmentDeg ? std::optional<double>(checked) : std::nullopt;
   state_.analysis.reset();
   state_.model_check.reset();
   return true;

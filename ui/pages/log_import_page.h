@@ -68,6 +68,9 @@ class LogImportPage : public QWizardPage {
   QPushButton* map_;
   QPointer<ColumnMappingDialog> mapping_dialog_;
   QGroupBox* installed_box_;
+  QWidget* alignment_row_;   // AUVs: the pitch sensor's level check
+  NumberInput* alignment_;
+  QLabel* error_;
   QGridLayout* installed_grid_;
   std::vector<NumberInput*> installed_;
   void prefillInstalledFromLog();

@@ -199,7 +199,8 @@ bool OperatorWizard::validateCurrentPage() {
       if (!in->isVisibleTo(p) || !in->isEnabled() || in->commit()) continue;
       QString name = in->accessibleName();
       for (QLabel* l : p->findChildren<QLabel*>())
-        if (l->buddy() == in) name = l->text().remove('&').remove(QRegularExpression(":$"));
+        if (l->buddy() == in || l->buddy() == in->lineEdit())
+          name = l->text().remove('&').remove(QRegularExpression(":$"));
       const QString text = tr("%1: %2").arg(name, in->problem());
       if (auto* err = p->findChild<QLabel*>("error")) {
         err->setText(text);

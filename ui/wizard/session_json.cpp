@@ -122,6 +122,7 @@ nlohmann::json sessionToJson(const WizardState& s, int page_id, const std::strin
   // Post mission: what was installed during the logged mission and the
   // model-check terms accepted (analysis and check are recomputed from the log).
   j["mission_installed_kg"] = s.mission_installed_kg;
+  if (s.pitch_alignment_sigma_deg) j["pitch_alignment_sigma_deg"] = *s.pitch_alignment_sigma_deg;
   j["accepted_terms"] = s.accepted_terms;
   if (!s.history_model.is_null()) j["history_model"] = s.history_model;
   if (!s.model_profile.is_null()) j["model_profile"] = s.model_profile;
@@ -200,6 +201,8 @@ SavedSession sessionFromJson(const std::string& json_text, const std::string& fi
     }
   }
   if (root.has("mission_installed_kg")) s.mission_installed_kg = root.numbers("mission_installed_kg");
+  if (root.has("pitch_alignment_sigma_deg"))
+    s.pitch_alignment_sigma_deg = root.numberIn("pitch_alignment_sigma_deg", kMinPitchAlignmentDeg, kMaxPitchAlignmentDeg);
   if (root.has("history_model")) s.history_model = root.node().at("history_model");
   if (root.has("model_profile")) s.model_profile = root.node().at("model_profile");
   if (s.vehicle && s.model_profile.is_object()) {

@@ -23,6 +23,11 @@ namespace auv::ui {
 // mission afterwards, plan the next one.
 enum class SessionMode { kFirstMission, kPostMission, kPreMission };
 
+// The pitch sensor level check's range, deg (the CLI's
+// --pitch-alignment-sigma-deg takes 0..5; the wizard's 0 is "not checked").
+inline constexpr double kMinPitchAlignmentDeg = 0.01;
+inline constexpr double kMaxPitchAlignmentDeg = 5.0;
+
 struct WizardState {
   std::string resource_dir;
   std::string vehicles_dir;
@@ -57,6 +62,10 @@ struct WizardState {
   // that mission, profile order), and the model check with the terms the
   // technician accepted (names of MissingPhysics entries).
   std::vector<double> mission_installed_kg;
+  // AUVs: the pitch sensor's alignment from a level check on the dock, 1
+  // sigma in deg (AnalysisOptions::pitch_alignment_sigma_deg); unset = not
+  // checked, the analysis's 1 deg prior.
+  std::optional<double> pitch_alignment_sigma_deg;
   std::optional<analysis::AnalysisReport> analysis;
   std::optional<discrepancy::ModelCheckResult> model_check;
   std::vector<std::string> accepted_terms;

@@ -1,9 +1,8 @@
-// The wizard's second mission of a configuration calibrates with the first
-// (issue 11 item 3), as `model-check --config` does: the first mission
-// analysed and saved to the history, the second imported with the pieces
-// moved; its analysis page says so and its estimate is the joint one. Oracles:
-// the same joint analysis run here through core, and the simulator's truth
-// in the log header.
+// What the log import page adds to the AUV analysis besides the log: the
+// configuration's history (its second mission calibrates with the first,
+// issue 11 item 3, as `model-check --config` does) and the pitch sensor's
+// level check (the prior on the sensor's bias). Oracles: the same analysis
+// run here through core, and the simulator's truth in the log header.
 #include <gtest/gtest.h>
 
 #include <QApplication>
@@ -11,7 +10,9 @@
 #include <QLabel>
 #include <cmath>
 
+#include "analysis/calibration_parameter.h"
 #include "analysis/mission_analysis.h"
+#include "common/input_error.h"
 #include "history/store.h"
 #include "missionlog/interchange_csv.h"
 #include "pages/deviation_plots_page.h"
@@ -26,6 +27,7 @@
 #include "wizard/demo_state.h"
 #include "wizard/history_save.h"
 #include "wizard/operator_wizard.h"
+#include "wizard/session_json.h"
 #include "workflow/history_calibration.h"
 
 namespace auv::ui {
@@ -58,12 +60,13 @@ bool hasNote(const analysis::AnalysisReport& r, const char* id) {
 
 }  // namespace
 
-class HistoryCalibrationWizard : public auv::testing::UiTest {
+class AnalysisInputsWizard : public auv::testing::UiTest {
  protected:
   // A post-mission session of the demo configuration (in the history) with
   // `log_file` imported and `installed` typed into the installed fields;
   // returns the wizard on the analysis page.
-  std::unique_ptr<OperatorWizard> analyse(const std::string& log_file, const std::vector<double>& installed) {
+  std::unique_ptr<OperatorWizard> analyse(const std::string& log_file, const std::vector<double>& installed,
+                                          const QString& level_check = QString()) {
     WizardState s = makeDemoState(AUV_RESOURCE_DIR);
     s.configuration_in_history = true;
     s.mode = SessionMode::kPostMission;
@@ -75,6 +78,7 @@ class HistoryCalibrationWizard : public auv::testing::UiTest {
     wiz->next();
     wiz->next();
     EXPECT_EQ(wiz->currentId(), OperatorWizard::kLogImport);
+    if (wiz->currentId() != OperatorWizard::kLogImport) return wiz;
     auto* import = qobject_cast<LogImportPage*>(wiz->currentPage());
     import->startImport(QString::fromStdString(log_file));
     QElapsedTimer t;
@@ -83,13 +87,14 @@ class HistoryCalibrationWizard : public auv::testing::UiTest {
     QApplication::processEvents();
     for (std::size_t i = 0; i < 4; ++i)
       auv::testing::typeInto(find<NumberInput>(*wiz, kInstalledFields[i]), QString::number(installed[i]));
+    if (!level_check.isEmpty()) auv::testing::typeInto(find<NumberInput>(*wiz, "pitch_alignment_sigma_deg"), level_check);
     wiz->next();
     EXPECT_EQ(wiz->currentId(), OperatorWizard::kDeviationPlots);
     return wiz;
   }
 };
 
-TEST_F(HistoryCalibrationWizard, TheSecondMissionCalibratesWithTheFirst) {
+TEST_F(AnalysisInputsWizard, TheSecondMissionCalibratesWithTheFirst) {
   {
     HistoryStore store(path("history.sqlite").toStdString());
     seedDemoHistory(store, AUV_RESOURCE_DIR, makeUtc(2026, 4, 30, 9, 0, 0));
@@ -133,6 +138,71 @@ TEST_F(HistoryCalibrationWizard, TheSecondMissionCalibratesWithTheFirst) {
   EXPECT_LE(std::abs(joint.net_buoyancy_kg.value - truth), 2.0 * joint.net_buoyancy_kg.sigma + 0.01)
       << joint.net_buoyancy_kg.value << " +- " << joint.net_buoyancy_kg.sigma << " truth " << truth;
   EXPECT_LT(joint.net_buoyancy_kg.sigma, alone.net_buoyancy_kg.sigma);
+}
+
+// Typed key by key: a level check of +-0.1 deg becomes the prior on the
+// sensor's bias (the analysis as core runs it with that prior), the session
+// keeps it, and a value out of range is refused on the page with the fix.
+TEST_F(AnalysisInputsWizard, APitchLevelCheckNarrowsTheSensorsPrior) {
+  {
+    HistoryStore store(path("history.sqlite").toStdString());
+    seedDemoHistory(store, AUV_RESOURCE_DIR, makeUtc(2026, 4, 30, 9, 0, 0));
+  }
+  const std::vector<double> installed{7.2, 7.2, 25.2, 25.2};
+  const std::string log_file = path("mission.csv").toStdString();
+  simulateMission(installed, 21, log_file);
+  double unchecked_sigma_kg = 0.0;
+  {
+    auto unchecked = analyse(log_file, installed);
+    ASSERT_TRUE(unchecked->state().analysis.has_value());
+    EXPECT_FALSE(unchecked->state().pitch_alignment_sigma_deg.has_value());
+    const analysis::CalibrationParameter* wide =
+        analysis::calibrationParameter(*unchecked->state().analysis, "pitch_sensor_bias");
+    ASSERT_NE(wide, nullptr);
+    EXPECT_DOUBLE_EQ(wide->prior_sigma, 1.0);  // not checked: an AHRS nobody aligned
+    unchecked_sigma_kg = unchecked->state().analysis->net_buoyancy_kg.sigma;
+  }
+
+  auto wiz = analyse(log_file, installed, "0.1");
+  ASSERT_EQ(wiz->state().pitch_alignment_sigma_deg, std::optional<double>(0.1));
+  ASSERT_TRUE(wiz->state().analysis.has_value());
+  const analysis::AnalysisReport& r = *wiz->state().analysis;
+  const analysis::CalibrationParameter* bias = analysis::calibrationParameter(r, "pitch_sensor_bias");
+  ASSERT_NE(bias, nullptr);
+  EXPECT_DOUBLE_EQ(bias->prior_sigma, 0.1);
+  const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("hugin1000");
+  analysis::AnalysisOptions o;
+  o.log_name = "mission.csv";
+  o.installed_kg = installed;
+  o.pitch_alignment_sigma_deg = 0.1;
+  const analysis::AnalysisReport core = analysis::analyzeMission(readInterchangeCsv(log_file), v, o);
+  EXPECT_NEAR(r.net_buoyancy_kg.value, core.net_buoyancy_kg.value, 1e-9);
+  EXPECT_NEAR(r.net_buoyancy_kg.sigma, core.net_buoyancy_kg.sigma, 1e-9);
+  EXPECT_LE(r.net_buoyancy_kg.sigma, unchecked_sigma_kg);
+
+  // The session keeps it; a resumed session shows it in the field.
+  const nlohmann::json saved = sessionToJson(wiz->state(), OperatorWizard::kDeviationPlots, "2026-05-20T12:00:00Z");
+  EXPECT_DOUBLE_EQ(saved.at("pitch_alignment_sigma_deg").get<double>(), 0.1);
+  const SavedSession back = sessionFromJson(saved.dump(), "session.json", AUV_RESOURCE_DIR);
+  EXPECT_EQ(back.state.pitch_alignment_sigma_deg, std::optional<double>(0.1));
+  nlohmann::json bad = saved;
+  bad["pitch_alignment_sigma_deg"] = 9.0;
+  EXPECT_THROW(sessionFromJson(bad.dump(), "session.json", AUV_RESOURCE_DIR), InputError);
+
+  // Out of range on the page: it stays, and says what to enter.
+  wiz->back();
+  ASSERT_EQ(wiz->currentId(), OperatorWizard::kLogImport);
+  EXPECT_EQ(find<NumberInput>(*wiz, "pitch_alignment_sigma_deg")->value(), 0.1);
+  auv::testing::typeInto(find<NumberInput>(*wiz, "pitch_alignment_sigma_deg"), "7");
+  wiz->next();
+  EXPECT_EQ(wiz->currentId(), OperatorWizard::kLogImport);
+  const QString error = wiz->currentPage()->findChild<QLabel*>("error")->text();
+  EXPECT_TRUE(error.startsWith("Pitch sensor level check, within ±: ")) << error.toStdString();
+  EXPECT_NE(error.indexOf("5"), -1) << error.toStdString();  // the limit
+  auv::testing::typeInto(find<NumberInput>(*wiz, "pitch_alignment_sigma_deg"), "0.2");
+  wiz->next();
+  EXPECT_EQ(wiz->currentId(), OperatorWizard::kDeviationPlots);
+  EXPECT_EQ(wiz->state().pitch_alignment_sigma_deg, std::optional<double>(0.2));
 }
 
 }  // namespace auv::ui
