@@ -17,7 +17,17 @@ double adoptedSigma(double analysis_value, double analysis_sigma, double check_v
 PlanEstimate planEstimate(const analysis::AnalysisReport& analysis, const ModelCheckResult* check,
                           const std::vector<std::string>& accepted_terms) {
   PlanEstimate out{analysis, EstimateSource::kAnalysis};
-  if (!check || analysis.vehicle_kind == "glider") return out;
+  if (analysis.vehicle_kind == "glider") return out;
+  // An analysis calibrated with an earlier mission across a known weight
+  // change has had a calibration experiment the check's single-log fit has
+  // not: its estimate stays (as model-check --config reports it).
+  const nlohmann::json& d = analysis.details;
+  if (analysis.net_buoyancy_kg.known && d.contains("auv_estimate") &&
+      d["auv_estimate"].value("history_segments_used", 0) > 0) {
+    out.source = EstimateSource::kHistoryJoint;
+    return out;
+  }
+  if (!check) return out;
   bool any = false;
   for (const auto& m : check->missing_physics)
     for (const auto& id : accepted_terms) any = any || m.id == id;

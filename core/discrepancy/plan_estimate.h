@@ -14,6 +14,7 @@ enum class EstimateSource {
   kAnalysis,    // calibrated from this log by the analysis
   kModelCheck,  // the model check's joint fit with the terms the technician accepted
   kModelCheckReplay,  // the model check's fit of the whole log, where the analysis's steady flight could not tell
+  kHistoryJoint,  // the analysis calibrated jointly with the configuration's earlier mission (history)
 };
 
 struct PlanEstimate {

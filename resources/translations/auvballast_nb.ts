@@ -2386,7 +2386,12 @@
         <translation>Planen bruker modellsjekkens tilpasning av hele loggen: den stødige flyvningen alene identifiserte ikke ballasttilstanden.</translation>
     </message>
     <message>
-        <location filename="../../ui/widgets/estimate_text.cpp" line="45"/>
+        <location filename="../../ui/widgets/estimate_text.cpp" line="43"/>
+        <source>The plan uses the estimate calibrated from this log and the configuration&apos;s earlier mission (the weight change between them is known).</source>
+        <translation>Planen bruker estimatet kalibrert fra denne loggen og det tidligere oppdraget med konfigurasjonen (vektendringen mellom dem er kjent).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/widgets/estimate_text.cpp" line="48"/>
         <source>The plan uses the estimate calibrated from this log.</source>
         <translation>Planen bruker estimatet kalibrert fra denne loggen.</translation>
     </message>

@@ -120,6 +120,8 @@ TEST_F(AnalysisInputsWizard, TheSecondMissionCalibratesWithTheFirst) {
   EXPECT_GT(joint.details["auv_estimate"].value("history_segments_used", 0), 0);
   EXPECT_NE(find<QLabel>(*wiz, "analysis_notes")->text().indexOf("earlier missions of this configuration"), -1)
       << find<QLabel>(*wiz, "analysis_notes")->text().toStdString();
+  const QString source = wiz->currentPage()->findChild<QLabel*>("plan_estimate_source")->text();
+  EXPECT_NE(source.indexOf("this log and the configuration's earlier mission"), -1) << source.toStdString();
 
   // The same joint analysis through core, and the truth.
   const VehicleProfile v = VehicleCatalog(std::string(AUV_RESOURCE_DIR) + "/vehicles").load("hugin1000");

@@ -350,7 +350,7 @@ void DeviationPlotsPage::showAnalysis() {
                 "flight cannot.");
   } else if (e) {
     source = EstimateText::planUses(e->source);
-    if (e->source != discrepancy::EstimateSource::kAnalysis)
+    if (e->source == discrepancy::EstimateSource::kModelCheck || e->source == discrepancy::EstimateSource::kModelCheckReplay)
       source += " " + tr("This log's analysis alone: net buoyancy %1.")
                           .arg(EstimateText::of(state_.analysis->net_buoyancy_kg, state_.isGlider() ? 3 : 2, tr(" kg")));
   }

@@ -39,6 +39,9 @@ QString EstimateText::planUses(discrepancy::EstimateSource source) {
     case discrepancy::EstimateSource::kModelCheckReplay:
       return tr("The plan uses the model check's fit of the whole log: the steady flight alone did not identify "
                 "the ballast state.");
+    case discrepancy::EstimateSource::kHistoryJoint:
+      return tr("The plan uses the estimate calibrated from this log and the configuration's earlier mission "
+                "(the weight change between them is known).");
     case discrepancy::EstimateSource::kAnalysis:
       break;
   }

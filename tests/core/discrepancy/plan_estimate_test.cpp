@@ -34,6 +34,23 @@ ModelCheckResult check() {
   return r;
 }
 
+// An analysis calibrated with the configuration's earlier mission (a known
+// weight change between them) keeps its estimate whatever the check says,
+// as model-check --config reports it: the check fits this log alone.
+TEST(PlanEstimate, AJointHistoryAnalysisKeepsItsEstimate) {
+  analysis::AnalysisReport joint = analysisReport();
+  joint.details["auv_estimate"]["history_segments_used"] = 3;
+  const ModelCheckResult c = check();
+  const PlanEstimate e = planEstimate(joint, &c, {"quadratic_pitch_damping"});
+  EXPECT_EQ(e.source, EstimateSource::kHistoryJoint);
+  EXPECT_DOUBLE_EQ(e.report.net_buoyancy_kg.value, 2.29);
+  EXPECT_DOUBLE_EQ(e.report.net_buoyancy_kg.sigma, 0.04);
+  EXPECT_DOUBLE_EQ(e.report.cg_x_mm.value, 0.4);
+  EXPECT_EQ(planEstimate(joint, nullptr, {}).source, EstimateSource::kHistoryJoint);
+  joint.details["auv_estimate"]["history_segments_used"] = 0;  // the history had nothing to add
+  EXPECT_EQ(planEstimate(joint, &c, {"quadratic_pitch_damping"}).source, EstimateSource::kModelCheck);
+}
+
 // The check's centre; its sigma widened by what separates it from the
 // analysis (2.88 against 2.29 +- 0.04: 0.59 kg the accepted term did not
 // reconcile), so the plan's margin covers both estimators.
