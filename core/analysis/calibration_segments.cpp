@@ -8,6 +8,17 @@
 namespace auv::analysis {
 namespace {
 enum { kSpeed = 0, kPitch, kRoll, kElev, kRate };
+
+// An averaged leg's cycle products moved by what a shift of its means
+// moves the products of its means (from a to b); the products of speed
+// alone (au_u, au_u_e) do not move.
+void moveCycleProducts(BalanceRegressors& r, const BalanceRegressors& a, const BalanceRegressors& b) {
+  r.cc += b.cc - a.cc;
+  r.sin_theta += b.sin_theta - a.sin_theta;
+  r.au_w += b.au_w - a.au_w;
+  r.u_w += b.u_w - a.u_w;
+  r.aw_w += b.aw_w - a.aw_w;
+}
 }  // namespace
 
 std::vector<CalibrationSegment> withPitchLowered(const std::vector<CalibrationSegment>& segs, double bias_rad) {
@@ -18,12 +29,7 @@ std::vector<CalibrationSegment> withPitchLowered(const std::vector<CalibrationSe
     if (!s.regressors) continue;
     const BalanceRegressors a = balanceRegressors({v0[kSpeed], v0[kPitch], v0[kRoll], v0[kElev], v0[kRate], s.density_kgm3});
     const BalanceRegressors b = balanceRegressors({s.v[kSpeed], s.v[kPitch], s.v[kRoll], s.v[kElev], s.v[kRate], s.density_kgm3});
-    BalanceRegressors& r = *s.regressors;
-    r.cc += b.cc - a.cc;
-    r.sin_theta += b.sin_theta - a.sin_theta;
-    r.au_w += b.au_w - a.au_w;
-    r.u_w += b.u_w - a.u_w;
-    r.aw_w += b.aw_w - a.aw_w;
+    moveCycleProducts(*s.regressors, a, b);
   }
   return out;
 }
@@ -43,12 +49,7 @@ SteadySegmentMeans withAttitudeRaised(SteadySegmentMeans s, double pitch_deg, do
   if (s.regressors) {
     const BalanceRegressors a = balanceRegressors(flight(before));
     const BalanceRegressors b = balanceRegressors(flight(s));
-    BalanceRegressors& r = *s.regressors;
-    r.cc += b.cc - a.cc;
-    r.sin_theta += b.sin_theta - a.sin_theta;
-    r.au_w += b.au_w - a.au_w;
-    r.u_w += b.u_w - a.u_w;
-    r.aw_w += b.aw_w - a.aw_w;
+    moveCycleProducts(*s.regressors, a, b);
   }
   return s;
 }
