@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/analysis_options.h"
 #include "analysis/auv_trim_estimation.h"
 #include "analysis/calibration_parameter.h"
 #include "common/message.h"
@@ -105,6 +106,11 @@ struct AnalysisReport {
   std::vector<Message> warnings;
   std::vector<Message> notes;
   nlohmann::json details = nlohmann::json::object();  // model-specific extras (fit, classic mode)
+  // What analyzeMission was asked (typed, not JSON): a later re-analysis of
+  // the same log (the model check's, with a found sensor bias taken out)
+  // runs with the same history, BG, priors and options. Unset for a report
+  // not made by analyzeMission here.
+  std::optional<AnalysisOptions> options;
 };
 
 nlohmann::json toJson(const AnalysisReport& r);

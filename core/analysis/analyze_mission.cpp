@@ -71,6 +71,7 @@ void carryBiasSigma(const MissionLog& log, const VehicleProfile& v, const Analys
 AnalysisReport analyzeMission(const MissionLog& log, const VehicleProfile& v, const AnalysisOptions& o) {
   const AttitudeSensorBias bias = acceptedAttitudeBias(v);
   AnalysisReport rep = analyzeWithBiasRemoved(log, v, o, bias);
+  rep.options = o;
   if (!bias.any()) return rep;
   carryBiasSigma(log, v, o, bias, rep);
   // What the legs still show is on top of the accepted bias: report the sensor's whole bias.

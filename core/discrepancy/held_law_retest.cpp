@@ -17,8 +17,10 @@ bool isHeldLaw(const MissingPhysics& m, const analysis::AnalysisReport& r) {
   return p && p->used;
 }
 
-// The options the analysis ran with, as far as its report keeps them.
+// The options the analysis ran with: all of them (history, BG, priors) when
+// analyzeMission made the report, else as far as its JSON details keep them.
 analysis::AnalysisOptions optionsOf(const analysis::AnalysisReport& r) {
+  if (r.options) return *r.options;
   analysis::AnalysisOptions a;
   a.log_name = r.log_name;
   if (r.details.contains("installed_kg") && r.details["installed_kg"].is_array())

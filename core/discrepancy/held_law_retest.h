@@ -20,9 +20,11 @@
 
 namespace auv::discrepancy {
 
-// `analysis` is the log's analysis the check held (its installed pieces and
-// a roll test's BG are reused; the history's missions are not). No-op for
-// gliders and without a found pitch sensor bias.
+// `analysis` is the log's analysis the check held: the log is analysed again
+// with the options it was made with (AnalysisReport::options: installed
+// pieces, BG, the sensor's prior, the history's missions, which analyzeMission
+// re-references to the new bias). No-op for gliders and without a found
+// pitch sensor bias.
 void followFoundPitchBias(const MissionLog& log, const VehicleProfile& v, const analysis::AnalysisReport& analysis,
                           ModelCheckResult& result);
 

@@ -13,6 +13,7 @@
 #include "analysis/calibration_segments.h"
 #include "common/units.h"
 #include "analysis/mission_analysis.h"
+#include "discrepancy/held_law_retest.h"
 #include "identification_harness.h"
 
 namespace auv::identification {
@@ -111,6 +112,61 @@ TEST(HistoryWithAcceptedBias, AMissionAnalysedBeforeTheBiasWasAcceptedJoinsOnThe
         << wrong.net_buoyancy_kg.value << " +- " << wrong.net_buoyancy_kg.sigma << " truth " << net_truth;
     EXPECT_GT(std::abs(wrong.cg_x_mm.value - x_truth), 3.0 * wrong.cg_x_mm.sigma)
         << wrong.cg_x_mm.value << " +- " << wrong.cg_x_mm.sigma << " truth " << x_truth;
+  };
+  h.run(5501, true);
+  EXPECT_EQ(called, 1);
+}
+
+// The model check that finds a pitch sensor bias analyses the log again
+// with it taken out (followFoundPitchBias). With a configuration's history
+// that second analysis must keep the history, re-referenced to the found
+// bias, as the analysis the check held did: analysed alone its net
+// buoyancy is the single log's, wider and elsewhere. Oracle: analyzeMission
+// given the same options and the profile with the bias accepted.
+TEST(HistoryWithAcceptedBias, TheChecksAnalysisWithoutTheFoundBiasKeepsTheHistory) {
+  Harness h;
+  h.concealed.pitch_bias_deg = 1.0;
+  h.pitch_alignment_sigma_deg = 0.0;  // the pitch read as true: the whole bias is the check's to find
+  int called = 0;
+  h.on_second_log = [&](const MissionLog& log, const analysis::AnalysisOptions& a, double net_truth, double) {
+    ++called;
+    ASSERT_EQ(a.history.size(), 1u);
+    const analysis::AnalysisReport rep = analysis::analyzeMission(log, h.profile(), a);
+    ASSERT_TRUE(rep.options.has_value());
+    EXPECT_EQ(rep.options->history.size(), 1u);
+    // The check's finding, as runModelCheck reports a pitch sensor bias.
+    discrepancy::ModelCheckResult found;
+    discrepancy::MissingPhysics bias;
+    bias.id = "pitch_sensor_bias";
+    bias.unit = "deg";
+    bias.value = 1.0;
+    bias.sigma = 0.05;
+    found.missing_physics.push_back(bias);
+    discrepancy::ModelCheckResult alone = found;
+
+    discrepancy::followFoundPitchBias(log, h.profile(), rep, found);
+    ASSERT_TRUE(found.analysis_without_pitch_bias.has_value());
+    const auto& free = *found.analysis_without_pitch_bias;
+    VehicleProfile accepted = h.profile();
+    accepted.sections["model_check"]["terms"]["pitch_sensor_bias"] = 1.0;
+    accepted.sections["model_check"]["accepted"] =
+        nlohmann::json::array({{{"id", "pitch_sensor_bias"}, {"sigma", 0.05}}});
+    const analysis::AnalysisReport joint = analysis::analyzeMission(log, accepted, a);
+    ASSERT_TRUE(joint.net_buoyancy_kg.known);
+    EXPECT_GT(joint.details["auv_estimate"].value("history_segments_used", 0), 0);
+    EXPECT_NEAR(free.net_buoyancy_kg, joint.net_buoyancy_kg.value, 1e-9);
+    EXPECT_NEAR(free.net_buoyancy_sigma_kg, joint.net_buoyancy_kg.sigma, 1e-9);
+    EXPECT_LE(std::abs(free.net_buoyancy_kg - net_truth), 2.0 * free.net_buoyancy_sigma_kg)
+        << free.net_buoyancy_kg << " +- " << free.net_buoyancy_sigma_kg << " truth " << net_truth;
+
+    // Control: a report that does not keep its options (one read back from
+    // JSON) is analysed again from what its details hold: the log alone.
+    analysis::AnalysisReport bare = rep;
+    bare.options.reset();
+    discrepancy::followFoundPitchBias(log, h.profile(), bare, alone);
+    ASSERT_TRUE(alone.analysis_without_pitch_bias.has_value());
+    EXPECT_GT(alone.analysis_without_pitch_bias->net_buoyancy_sigma_kg, 1.5 * free.net_buoyancy_sigma_kg)
+        << alone.analysis_without_pitch_bias->net_buoyancy_sigma_kg << " vs " << free.net_buoyancy_sigma_kg;
   };
   h.run(5501, true);
   EXPECT_EQ(called, 1);
