@@ -18,7 +18,8 @@
 // --pitch-alignment-sigma DEG: the analysis's prior on the sensor's bias
 // (default 1; 0 = the pitch read as true). --pitch-bias DEG: every
 // mission's pitch sensor reads DEG too high, as in
-// hugin_concealed_bench's pitch-bias case; --dump SEED PREFIX writes one
+// hugin_concealed_bench's pitch-bias case; --sigma-factor K: k of the
+// plans' safety margin, default 1.645; --dump SEED PREFIX writes one
 // truth's logs and first report for the CLI and the wizard)
 #include <algorithm>
 #include <chrono>
@@ -147,7 +148,7 @@ int main(int argc, char** argv) {
   int truths = 50;
   std::uint64_t seed = 1100;
   bool loop = true, timing = true, verbose = false, fly_manoeuvre = false;
-  double log_interval_s = 1.0, pitch_bias_deg = 0.0, alignment_sigma_deg = 1.0;
+  double log_interval_s = 1.0, pitch_bias_deg = 0.0, alignment_sigma_deg = 1.0, sigma_factor = PreMissionInput{}.sigma_factor;
   bool transients = false;
   int model_checks = 0;
   for (int i = 1; i < argc; ++i) {
@@ -162,6 +163,7 @@ int main(int argc, char** argv) {
     else if (a == "--transients") transients = true;
     else if (a == "--pitch-bias" && i + 1 < argc) pitch_bias_deg = std::atof(argv[++i]);  // a concealed sensor bias
     else if (a == "--pitch-alignment-sigma" && i + 1 < argc) alignment_sigma_deg = std::atof(argv[++i]);  // 0: read as true
+    else if (a == "--sigma-factor" && i + 1 < argc) sigma_factor = std::atof(argv[++i]);  // k of the plans' margin
     else if (a == "--model-check" && i + 1 < argc) model_checks = std::atoi(argv[++i]);
     else if (a == "--truth-doc" && i + 2 < argc) {  // --truth-doc SEED FILE: the truth's hydrodynamics companion
       const nlohmann::json nominal = JsonReader::parseFile(std::string(AUV_RESOURCE_DIR) + "/sim/hugin1000_hydrodynamics.json");
@@ -176,12 +178,13 @@ int main(int argc, char** argv) {
       h.log_interval_s = log_interval_s;
       h.use_transients = transients;
       h.fly_manoeuvre = fly_manoeuvre;
+      h.sigma_factor = sigma_factor;
       const auto r = h.run(std::strtoull(argv[i + 1], nullptr, 10), true, argv[i + 2]);
       std::printf("%s\n", r.truth.describe().c_str());
       return 0;
     }
     else {
-      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre] [--pitch-bias DEG] [--pitch-alignment-sigma DEG] [--model-check N] [--dump SEED PREFIX]\n");
+      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre] [--pitch-bias DEG] [--pitch-alignment-sigma DEG] [--sigma-factor K] [--model-check N] [--dump SEED PREFIX]\n");
       return 2;
     }
   }
@@ -189,6 +192,7 @@ int main(int argc, char** argv) {
   h.log_interval_s = log_interval_s;
   h.use_transients = transients;
   h.fly_manoeuvre = fly_manoeuvre;
+  h.sigma_factor = sigma_factor;
   h.concealed.pitch_bias_deg = pitch_bias_deg;
   h.pitch_alignment_sigma_deg = alignment_sigma_deg;
   std::vector<double> en, ex, ey, en2, ex2, zn, zx;  // zn, zx: |error| / sigma

@@ -222,6 +222,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
     in.installed_kg = installed_now;
     in.estimate = trimEstimateFromReport(report, "identification harness");
     in.next = nextMissionWater(next, op_depth, "operator");
+    in.sigma_factor = sigma_factor;
     in.next.temperature_sigma_degC = 0.1;  // a CTD cast before launch
     in.next.salinity_sigma_psu = 0.05;
     in.policy = PlanPolicy::Exact;

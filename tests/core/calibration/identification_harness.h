@@ -15,6 +15,7 @@
 #include "analysis/calibration_parameter.h"
 #include "analysis/mission_analysis.h"
 #include "discrepancy/synthetic_auv.h"
+#include "planning/pre_mission_plan.h"
 #include "missionlog/mission_log.h"
 #include "sim/mission_plan.h"
 #include "sim/truth_draw.h"
@@ -86,6 +87,9 @@ class Harness {
   // manoeuvre (1 Hz) biased it by about 0.1 kg on some truths
   // (docs/decisions/analysis-calibration.md).
   bool fly_manoeuvre = false;
+  // k of the plans' safety margin (PreMissionInput::sigma_factor): the
+  // bench's --sigma-factor weighs the spec band against never negative.
+  double sigma_factor = PreMissionInput{}.sigma_factor;
   // An effect the analysis model lacks (hull compressibility, thermal
   // expansion, mass drift, a pitch sensor bias, quadratic pitch damping), in
   // every mission the truth flies: the model check's concealed-effect proof
