@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "analysis/analysis_report.h"
 #include "analysis/mission_analysis.h"
@@ -53,26 +54,28 @@ int runAnalyze(const AnalyzeOpts& o) {
       throw InputError("coefficient-sigma", "must be a fraction between 0 and 1", "e.g. --coefficient-sigma 0.02 for derivatives known to 2 %");
     a.coefficient_rel_sigma = r;
   }
+  std::optional<double> alignment_sigma_deg;
   if (!o.pitch_alignment_sigma.empty()) {
     const double s = parseNumber(o.pitch_alignment_sigma, "pitch-alignment-sigma-deg",
                                  "the 1-sigma uncertainty of the pitch sensor's alignment, deg");
     if (!(s >= 0.0 && s <= 5.0))
       throw InputError("pitch-alignment-sigma-deg", "must be between 0 and 5 deg",
                        "e.g. --pitch-alignment-sigma-deg 0.1 after a level check on the dock, 0 to read the pitch as true");
-    a.pitch_alignment_sigma_deg = s;
+    alignment_sigma_deg = s;
   }
   a.classic = !o.no_classic;
   a.use_transients = o.transients;
 
   // With a configuration: the pieces that flew (unless given), its roll
-  // test's BG and its latest analysed mission, whose known weight change
-  // calibrates jointly with this one. Read only: model-check --config and
-  // the wizard record missions.
+  // test's BG, its pitch sensor level check and its latest analysed
+  // mission, whose known weight change calibrates jointly with this one.
+  // Read only: model-check --config and the wizard record missions.
   if (!o.config.empty()) {
     requireValidConfigurationId(o.config);
     HistoryStore store(historyPath(o.history));
     addConfigurationHistory(store, o.config, v, nowUtc(), a);
   }
+  if (alignment_sigma_deg) a.pitch_alignment_sigma_deg = *alignment_sigma_deg;  // over the configuration's level check
 
   ReadReport readReport;
   const MissionLog log = readLogArgument(o.log, logReadOptions(o.cache_dir), readReport);
@@ -130,11 +133,13 @@ Command addAnalyzeCommand(CLI::App& app) {
                   "(default 0.30 with the Munk structure unknown; 0.02 once known, e.g. from a tow tank)");
   cmd->add_option("--pitch-alignment-sigma-deg", o->pitch_alignment_sigma,
                   "AUVs: prior 1-sigma of the pitch sensor's bias, which the calibration finds beside the ballast "
-                  "state (calibration id pitch_sensor_bias; default 1 deg; 0 = the sensor is aligned)");
+                  "state (calibration id pitch_sensor_bias; default 1 deg, or the --config's level check; 0 = the "
+                  "sensor is aligned)");
   cmd->add_option("--config", o->config,
-                  "AUVs: configuration ID in the history: the pieces that flew and BG default to its installed state "
-                  "and roll test, and the analysis calibrates jointly with its latest analysed mission (the known "
-                  "weight change between them; details.auv_estimate.history_segments_used). Nothing is written");
+                  "AUVs: configuration ID in the history: the pieces that flew, BG and the pitch sensor's prior default "
+                  "to its installed state, roll test and level check, and the analysis calibrates jointly with its "
+                  "latest analysed mission (the known weight change between them; "
+                  "details.auv_estimate.history_segments_used). Nothing is written");
   cmd->add_option("--history", o->history, "History database for --config (default: the user's, as for 'plan')");
   cmd->add_flag("--no-classic", o->no_classic, "Skip the thesis's App. D checks (reported under details.classic)");
   cmd->add_flag("--transients", o->transients,

@@ -204,7 +204,8 @@ Command addModelCheckCommand(CLI::App& app) {
                 "Write the accepted terms and the identified calibration constants into a complete copy of the vehicle "
                 "profile (hydrodynamics included)");
   cmd->add_option("--config", o->config,
-                  "Configuration ID: the pieces that flew default to its installed state, the analysis calibrates jointly "
+                  "Configuration ID: the pieces that flew, BG and the pitch sensor's prior default to its installed state, "
+                  "roll test and dock level check, the analysis calibrates jointly "
                   "with its latest analysed mission; with --accept the accepted terms become its vehicle model and this "
                   "analysis is recorded for 'plan --config'");
   cmd->add_option("--history", o->history, "History database (default: the user's, as for 'plan')");

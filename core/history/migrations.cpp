@@ -114,6 +114,13 @@ const char* kSchemaV4 = R"sql(
 ALTER TABLE configurations ADD COLUMN bg_mm REAL CHECK (bg_mm IS NULL OR (bg_mm > 0 AND bg_mm < 500));
 )sql";
 
+// v5: how closely the configuration's pitch sensor was checked level on the
+// dock (1 sigma of its bias, deg); NULL = not checked. Existing rows get NULL.
+const char* kSchemaV5 = R"sql(
+ALTER TABLE configurations ADD COLUMN pitch_level_check_deg REAL
+  CHECK (pitch_level_check_deg IS NULL OR (pitch_level_check_deg > 0 AND pitch_level_check_deg <= 5));
+)sql";
+
 std::vector<Migration> makeStandard() {
   return {
       {1, "vehicles, configurations, weighings, water, missions",
@@ -122,6 +129,8 @@ std::vector<Migration> makeStandard() {
        [](Database& db) { db.exec(kSchemaV2, "creating schema v2"); }},
       {3, "accepted vehicle-model terms", [](Database& db) { db.exec(kSchemaV3, "creating schema v3"); }},
       {4, "BG of each configuration", [](Database& db) { db.exec(kSchemaV4, "adding configurations.bg_mm"); }},
+      {5, "pitch sensor level check of each configuration",
+       [](Database& db) { db.exec(kSchemaV5, "adding configurations.pitch_level_check_deg"); }},
   };
 }
 }  // namespace

@@ -37,6 +37,7 @@ nlohmann::json toJson(const Configuration& c) {
                       {"area", c.area},                 {"water_type", c.water_type},
                       {"created_at", toIsoUtc(c.created_at)}};
   if (c.bg_mm) j["bg_mm"] = *c.bg_mm;  // absent = not measured
+  if (c.pitch_level_check_deg) j["pitch_level_check_deg"] = *c.pitch_level_check_deg;  // absent = not checked
   return j;
 }
 

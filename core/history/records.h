@@ -33,6 +33,9 @@ struct Configuration {
   // CG below CB from an inclining or roll test (what makes CG y and roll
   // identifiable from a log); unset = not measured.
   std::optional<double> bg_mm;
+  // How closely its pitch sensor was checked level on the dock, deg (the
+  // analysis's prior on the sensor's bias); unset = not checked.
+  std::optional<double> pitch_level_check_deg;
 };
 
 enum class WeighingMethod { kCrane, kTank };

@@ -33,7 +33,7 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
                        "restore the automatic backup: move '" + path() + "' aside and copy '" + db.backupPath() +
                            "' to '" + path() + "'");
     }
-    has_bg_column_ = db.queryInt("SELECT count(*) FROM pragma_table_info('configurations') WHERE name = 'bg_mm'") > 0;
+    readOptionalColumns();
     return;
   }
   // WAL: a save appends to the -wal file and the main file changes only at
@@ -50,7 +50,16 @@ void HistoryStore::open(const std::vector<Migration>& steps) {
   db.exec("PRAGMA synchronous = FULL", "setting synchronous mode");
   db.exec("PRAGMA foreign_keys = ON", "enabling foreign keys");
   migrate(db, steps);
-  has_bg_column_ = db.queryInt("SELECT count(*) FROM pragma_table_info('configurations') WHERE name = 'bg_mm'") > 0;
+  readOptionalColumns();
+}
+
+void HistoryStore::readOptionalColumns() {
+  const auto has = [this](const char* column) {
+    return db_->queryInt(std::string("SELECT count(*) FROM pragma_table_info('configurations') WHERE name = '") + column +
+                         "'") > 0;
+  };
+  has_bg_column_ = has("bg_mm");
+  has_level_check_column_ = has("pitch_level_check_deg");
 }
 
 int HistoryStore::schemaVersion() { return schemaVersionOf(*db_); }

@@ -45,6 +45,10 @@ class HistoryStore {
   // BG (mm, CG below CB) of an existing configuration; nullopt = not measured.
   // InputError outside 0..500 mm or for an unknown configuration.
   void setConfigurationBg(const std::string& config_id, std::optional<double> bg_mm);
+  // How closely the pitch sensor was checked level (deg, 1 sigma of its
+  // bias); nullopt = not checked. InputError outside 0..5 deg or for an
+  // unknown configuration.
+  void setConfigurationPitchLevelCheck(const std::string& config_id, std::optional<double> deg);
   RecordId addWeighing(const std::string& config_id, const Weighing& w);
   RecordId addWaterCondition(const std::string& config_id, const WaterCondition& w);
   // InputError if the same content (sha256) is already in this configuration.
@@ -88,10 +92,12 @@ class HistoryStore {
   void open(const std::vector<Migration>& steps);
   RecordId configRow(const std::string& config_id);
   // The configurations' columns as this file has them: a store opened with
-  // fewer steps (an older program's schema, in tests) has no bg_mm.
+  // fewer steps (an older program's schema, in tests) has no bg_mm or
+  // pitch_level_check_deg.
   std::string configColumns() const;
+  void readOptionalColumns();
   std::unique_ptr<Database> db_;
-  bool has_bg_column_ = false;
+  bool has_bg_column_ = false, has_level_check_column_ = false;
 };
 
 }  // namespace auv

@@ -21,6 +21,7 @@ nlohmann::json parseStored(const std::string& text, const std::string& what) {
 
 const char* kConfigSelect = "c.id, c.config_id, v.key, v.name, c.payload_note, c.area, c.water_type, c.created_at, ";
 const char* kConfigFrom = " FROM configurations c JOIN vehicles v ON v.id = c.vehicle_id";
+constexpr int kConfigColumnCount = 10;  // what readConfiguration reads: columns 0..9
 Configuration readConfiguration(Statement& st) {
   Configuration c;
   c.id = st.integer(0);
@@ -32,6 +33,7 @@ Configuration readConfiguration(Statement& st) {
   c.water_type = st.text(6);
   c.created_at = parseIsoUtc(st.text(7), "configurations.created_at");
   c.bg_mm = st.optReal(8);
+  c.pitch_level_check_deg = st.optReal(9);
   return c;
 }
 
@@ -140,7 +142,8 @@ std::string likePattern(const std::string& text) {
 }  // namespace
 
 std::string HistoryStore::configColumns() const {
-  return std::string(kConfigSelect) + (has_bg_column_ ? "c.bg_mm" : "NULL") + kConfigFrom;
+  return std::string(kConfigSelect) + (has_bg_column_ ? "c.bg_mm" : "NULL") +
+         (has_level_check_column_ ? ", c.pitch_level_check_deg" : ", NULL") + kConfigFrom;
 }
 
 std::optional<Configuration> HistoryStore::configuration(const std::string& config_id) {
@@ -257,7 +260,7 @@ std::vector<ConfigurationSummary> HistoryStore::recentConfigurations(std::size_t
   while (st.step()) {
     ConfigurationSummary s;
     s.configuration = readConfiguration(st);
-    s.last_activity = parseIsoUtc(st.text(9), "last activity");
+    s.last_activity = parseIsoUtc(st.text(kConfigColumnCount), "last activity");
     out.push_back(std::move(s));
   }
   return out;

@@ -34,6 +34,16 @@ std::optional<double> checkedBg(const std::optional<double>& bg_mm) {
   return bg_mm;
 }
 
+// The level check narrows the analysis's prior on the pitch sensor's bias:
+// a wrong one is a confident wrong net buoyancy.
+std::optional<double> checkedLevelCheck(const std::optional<double>& deg) {
+  if (deg && !(std::isfinite(*deg) && *deg > 0.0 && *deg <= 5.0))
+    throw InputError("pitch sensor level check", "value " + std::to_string(*deg) + " deg is outside 0..5 deg",
+                     "enter how closely the pitch sensor was checked level on the dock, e.g. 0.1, or leave it empty "
+                     "when not checked");
+  return deg;
+}
+
 void validate(const InstalledState& s) {
   for (const InstalledPoint& p : s.points) {
     const std::string field = "installed." + (p.name.empty() ? std::string("?") : p.name);
@@ -84,15 +94,17 @@ RecordId HistoryStore::addConfiguration(const Configuration& c) {
                      "continue with the existing configuration or choose a new ID");
   const RecordId vehicle = ensureVehicle(c.vehicle_key, c.vehicle_name);
   const std::optional<double> bg = checkedBg(c.bg_mm);
-  auto st = db_->prepare(has_bg_column_ ? "INSERT INTO configurations(config_id, vehicle_id, payload_note, area, "
-                                          "water_type, created_at, bg_mm) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)"
-                                        : "INSERT INTO configurations(config_id, vehicle_id, payload_note, area, "
-                                          "water_type, created_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  const std::optional<double> level = checkedLevelCheck(c.pitch_level_check_deg);
+  auto st = db_->prepare("INSERT INTO configurations(config_id, vehicle_id, payload_note, area, water_type, created_at) "
+                         "VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
   st.bind(1, c.config_id).bind(2, vehicle).bind(3, c.payload_note).bind(4, c.area);
   st.bind(5, c.water_type).bind(6, toIsoUtc(c.created_at));
-  if (has_bg_column_) st.bind(7, bg);
   st.run();
   const RecordId id = db_->lastInsertId();
+  // The columns later schemas added (an older program's file has neither).
+  if (has_bg_column_) db_->prepare("UPDATE configurations SET bg_mm = ?1 WHERE id = ?2").bind(1, bg).bind(2, id).run();
+  if (has_level_check_column_)
+    db_->prepare("UPDATE configurations SET pitch_level_check_deg = ?1 WHERE id = ?2").bind(1, level).bind(2, id).run();
   tx.commit();
   return id;
 }
@@ -101,6 +113,13 @@ void HistoryStore::setConfigurationBg(const std::string& config_id, std::optiona
   Transaction tx(*db_);
   auto st = db_->prepare("UPDATE configurations SET bg_mm = ?1 WHERE id = ?2");
   st.bind(1, checkedBg(bg_mm)).bind(2, configRow(config_id)).run();
+  tx.commit();
+}
+
+void HistoryStore::setConfigurationPitchLevelCheck(const std::string& config_id, std::optional<double> deg) {
+  Transaction tx(*db_);
+  auto st = db_->prepare("UPDATE configurations SET pitch_level_check_deg = ?1 WHERE id = ?2");
+  st.bind(1, checkedLevelCheck(deg)).bind(2, configRow(config_id)).run();
   tx.commit();
 }
 

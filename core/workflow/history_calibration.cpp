@@ -50,8 +50,10 @@ void addConfigurationHistory(HistoryStore& store, const std::string& config_id, 
                      "record the configuration first (first-mission or the wizard)");
   if (a.installed_kg.empty() && h.installed) a.installed_kg = installedKg(*h.installed, v, config_id);
   // The configuration's roll test, as the wizard uses it (CG y becomes identifiable).
-  if (!a.bg_m && v.kind == "auv")
-    if (const auto c = store.configuration(config_id); c && c->bg_mm) a.bg_m = *c->bg_mm / 1000.0;
+  const std::optional<Configuration> c = store.configuration(config_id);
+  if (!a.bg_m && v.kind == "auv" && c && c->bg_mm) a.bg_m = *c->bg_mm / 1000.0;
+  // Its dock level check narrows the prior on the pitch sensor's bias.
+  if (v.kind == "auv" && c && c->pitch_level_check_deg) a.pitch_alignment_sigma_deg = *c->pitch_level_check_deg;
   a.history = historyCalibrationMissions(store, config_id, v, now, a.log_name);
 }
 

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "history/store.h"
 
 namespace {
 
@@ -154,6 +155,14 @@ TEST(ModelCheckCli, AcceptIntoAConfigurationThenPlanThenTheNextMissionCalibrates
   const std::size_t at = sim2.out.find("CG - CB x ");
   ASSERT_NE(at, std::string::npos) << sim2.out;
   const double cg_x_truth_mm = std::stod(sim2.out.substr(at + 10));
+  // The pitch sensor was checked level to 0.15 deg on the dock (the wizard
+  // keeps that with the configuration): the prior on its bias from now on.
+  auv::HistoryStore(h).setConfigurationPitchLevelCheck("7-1-1", 0.15);
+  const auto biasPriorSigma = [](const nlohmann::json& report) {
+    for (const auto& q : report["calibration"])
+      if (q["id"] == "pitch_sensor_bias") return q["prior_sigma"].get<double>();
+    return -1.0;
+  };
   // analyze --config: the same joint calibration (pieces from the history),
   // read only: the history's latest analysis stays mission 1's.
   r = runCli("analyze --vehicle hugin1000 --log " + log2 + " --config 7-1-1 --history " + h + " --json " + tmp("flow_an2.json"));
@@ -163,6 +172,11 @@ TEST(ModelCheckCli, AcceptIntoAConfigurationThenPlanThenTheNextMissionCalibrates
   EXPECT_EQ(unknown.code, 2);
   EXPECT_NE(unknown.err.find("'9-9-9' is not in the history"), std::string::npos) << unknown.err;
   EXPECT_GT(an2["details"]["auv_estimate"].value("history_segments_used", 0), 0) << an2["notes"].dump();
+  EXPECT_DOUBLE_EQ(biasPriorSigma(an2), 0.15);
+  r = runCli("analyze --vehicle hugin1000 --log " + log2 + " --config 7-1-1 --history " + h +
+             " --pitch-alignment-sigma-deg 0.5 --json -");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_DOUBLE_EQ(biasPriorSigma(nlohmann::json::parse(r.out)), 0.5);  // the flag over the configuration
   ASSERT_EQ(an2["details"]["installed_kg"].size(), after.size());
   for (std::size_t i = 0; i < after.size(); ++i)  // what the accepted plan installed
     EXPECT_NEAR(an2["details"]["installed_kg"][i].get<double>(), before[i] + after[i], 1e-6) << i;
@@ -171,6 +185,7 @@ TEST(ModelCheckCli, AcceptIntoAConfigurationThenPlanThenTheNextMissionCalibrates
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json mc2 = readJson(tmp("flow_mc2.json"));
   EXPECT_NEAR(an2["net_buoyancy_kg"].get<double>(), mc2["net_buoyancy_kg"].get<double>(), 1e-6);
+  EXPECT_DOUBLE_EQ(biasPriorSigma(mc2), 0.15);
   bool joint = false;
   for (const auto& n : mc2["notes"])
     joint = joint || n.get<std::string>().find("steady segments of earlier missions") != std::string::npos;

@@ -8,6 +8,9 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QLabel>
+#include <QRadioButton>
+#include <QTableWidget>
+#include <QTest>
 #include <cmath>
 
 #include "analysis/calibration_parameter.h"
@@ -52,6 +55,17 @@ void simulateMission(const std::vector<double>& installed, std::uint64_t seed, c
   sim::writeSimulatedLog(tr, {v.id, "plan", plan_file, seed, sv.model.thruster_count, installed, {}}, out);
 }
 
+// The log import page (current) imports `log_file`; returns when it is done.
+void importLog(OperatorWizard& wiz, const std::string& log_file) {
+  auto* import = qobject_cast<LogImportPage*>(wiz.currentPage());
+  ASSERT_NE(import, nullptr);
+  import->startImport(QString::fromStdString(log_file));
+  QElapsedTimer t;
+  t.start();
+  while (import->job().running() && t.elapsed() < 60000) QApplication::processEvents(QEventLoop::AllEvents, 20);
+  QApplication::processEvents();
+}
+
 bool hasNote(const analysis::AnalysisReport& r, const char* id) {
   for (const Message& n : r.notes)
     if (n.id() == id) return true;
@@ -62,6 +76,18 @@ bool hasNote(const analysis::AnalysisReport& r, const char* id) {
 
 class AnalysisInputsWizard : public auv::testing::UiTest {
  protected:
+  // The demo configuration in the history and one mission flown with
+  // `installed` kg at the four points; returns the log's path.
+  std::string seedHistoryAndFly(const std::vector<double>& installed) {
+    {
+      HistoryStore store(path("history.sqlite").toStdString());
+      seedDemoHistory(store, AUV_RESOURCE_DIR, makeUtc(2026, 4, 30, 9, 0, 0));
+    }
+    const std::string log_file = path("mission.csv").toStdString();
+    simulateMission(installed, 21, log_file);
+    return log_file;
+  }
+
   // A post-mission session of the demo configuration (in the history) with
   // `log_file` imported and `installed` typed into the installed fields;
   // returns the wizard on the analysis page.
@@ -79,12 +105,7 @@ class AnalysisInputsWizard : public auv::testing::UiTest {
     wiz->next();
     EXPECT_EQ(wiz->currentId(), OperatorWizard::kLogImport);
     if (wiz->currentId() != OperatorWizard::kLogImport) return wiz;
-    auto* import = qobject_cast<LogImportPage*>(wiz->currentPage());
-    import->startImport(QString::fromStdString(log_file));
-    QElapsedTimer t;
-    t.start();
-    while (import->job().running() && t.elapsed() < 60000) QApplication::processEvents(QEventLoop::AllEvents, 20);
-    QApplication::processEvents();
+    importLog(*wiz, log_file);
     for (std::size_t i = 0; i < 4; ++i)
       auv::testing::typeInto(find<NumberInput>(*wiz, kInstalledFields[i]), QString::number(installed[i]));
     if (!level_check.isEmpty()) auv::testing::typeInto(find<NumberInput>(*wiz, "pitch_alignment_sigma_deg"), level_check);
@@ -146,13 +167,8 @@ TEST_F(AnalysisInputsWizard, TheSecondMissionCalibratesWithTheFirst) {
 // sensor's bias (the analysis as core runs it with that prior), the session
 // keeps it, and a value out of range is refused on the page with the fix.
 TEST_F(AnalysisInputsWizard, APitchLevelCheckNarrowsTheSensorsPrior) {
-  {
-    HistoryStore store(path("history.sqlite").toStdString());
-    seedDemoHistory(store, AUV_RESOURCE_DIR, makeUtc(2026, 4, 30, 9, 0, 0));
-  }
   const std::vector<double> installed{7.2, 7.2, 25.2, 25.2};
-  const std::string log_file = path("mission.csv").toStdString();
-  simulateMission(installed, 21, log_file);
+  const std::string log_file = seedHistoryAndFly(installed);
   double unchecked_sigma_kg = 0.0;
   {
     auto unchecked = analyse(log_file, installed);
@@ -205,6 +221,60 @@ TEST_F(AnalysisInputsWizard, APitchLevelCheckNarrowsTheSensorsPrior) {
   wiz->next();
   EXPECT_EQ(wiz->currentId(), OperatorWizard::kDeviationPlots);
   EXPECT_EQ(wiz->state().pitch_alignment_sigma_deg, std::optional<double>(0.2));
+}
+
+// The level check belongs to the configuration, like its BG: saved with the
+// mission, filled in when the configuration is picked again (by mouse, as a
+// technician does), and cleared by a 0 ("not checked") after a remount.
+TEST_F(AnalysisInputsWizard, TheLevelCheckStaysWithTheConfiguration) {
+  const std::vector<double> installed{7.2, 7.2, 25.2, 25.2};
+  const std::string log_file = seedHistoryAndFly(installed);
+  std::string config_id;
+  {
+    auto wiz = analyse(log_file, installed, "0.1");
+    config_id = wiz->state().configuration_id;
+    saveMissionToHistory(*wiz->history(), wiz->state(), fixedNow());
+  }
+  {
+    HistoryStore store(path("history.sqlite").toStdString());
+    ASSERT_TRUE(store.configuration(config_id)->pitch_level_check_deg.has_value());
+    EXPECT_DOUBLE_EQ(*store.configuration(config_id)->pitch_level_check_deg, 0.1);
+  }
+
+  // Picked again from the start page: row, Post mission, Next, Next.
+  OperatorWizard again(makeEmptyState(AUV_RESOURCE_DIR));
+  again.setClock(fixedNow);
+  again.setAutosaveEnabled(false);
+  again.resize(1000, 760);
+  again.show();
+  auto* table = find<QTableWidget>(again, "configurations");
+  int row = -1;
+  for (int r = 0; r < table->rowCount(); ++r)
+    if (table->item(r, 0) && table->item(r, 0)->text() == QString::fromStdString(config_id)) row = r;
+  ASSERT_GE(row, 0);
+  const QRect cell = table->visualItemRect(table->item(row, 0));
+  QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
+  auto* post = find<QRadioButton>(again, "mode_post");
+  QTest::mouseClick(post, Qt::LeftButton, Qt::NoModifier, QPoint(8, post->height() / 2));
+  ASSERT_TRUE(post->isChecked());
+  QTest::mouseClick(again.button(QWizard::NextButton), Qt::LeftButton);
+  QTest::mouseClick(again.button(QWizard::NextButton), Qt::LeftButton);
+  ASSERT_EQ(again.currentId(), OperatorWizard::kLogImport);
+  auto* field = find<NumberInput>(again, "pitch_alignment_sigma_deg");
+  EXPECT_DOUBLE_EQ(field->value(), 0.1);
+  EXPECT_EQ(field->text(), "0.10");
+
+  // The sensor was remounted: 0 = not checked, saved with the next mission.
+  const std::string log2 = path("mission2.csv").toStdString();
+  simulateMission(installed, 22, log2);
+  importLog(again, log2);
+  auv::testing::typeInto(field, "0");
+  QTest::mouseClick(again.button(QWizard::NextButton), Qt::LeftButton);
+  ASSERT_EQ(again.currentId(), OperatorWizard::kDeviationPlots);
+  EXPECT_FALSE(again.state().pitch_alignment_sigma_deg.has_value());
+  saveMissionToHistory(*again.history(), again.state(), fixedNow() + std::chrono::hours(1));
+  HistoryStore store(path("history.sqlite").toStdString());
+  EXPECT_FALSE(store.configuration(config_id)->pitch_level_check_deg.has_value());
 }
 
 }  // namespace auv::ui

@@ -334,6 +334,7 @@ void StartPage::applyConfiguration(const Configuration& c) {
   state_.configuration_id = c.config_id;
   state_.payload_note = c.payload_note;
   state_.bg_mm = c.bg_mm;
+  state_.pitch_alignment_sigma_deg = c.pitch_level_check_deg;
   state_.area = c.area;
   state_.water_type = c.water_type;
   state_.configuration_in_history = true;

@@ -20,8 +20,12 @@ void ensureConfiguration(HistoryStore& store, const WizardState& s, TimePoint no
       throw InputError("configuration ID", "'" + s.configuration_id + "' already exists in the history",
                        "pick it on the start page or choose a new ID");
     }
-    // A new roll test (or a corrected BG) belongs to the configuration.
-    if (store.configuration(s.configuration_id)->bg_mm != s.bg_mm) store.setConfigurationBg(s.configuration_id, s.bg_mm);
+    // A new roll test (or a corrected BG) and a new level check of the
+    // pitch sensor belong to the configuration.
+    const Configuration c = *store.configuration(s.configuration_id);
+    if (c.bg_mm != s.bg_mm) store.setConfigurationBg(s.configuration_id, s.bg_mm);
+    if (!s.isGlider() && c.pitch_level_check_deg != s.pitch_alignment_sigma_deg)
+      store.setConfigurationPitchLevelCheck(s.configuration_id, s.pitch_alignment_sigma_deg);
     return;
   }
   Configuration c;
@@ -32,6 +36,7 @@ void ensureConfiguration(HistoryStore& store, const WizardState& s, TimePoint no
   c.area = s.area;
   c.water_type = s.water_type;
   c.bg_mm = s.bg_mm;
+  if (!s.isGlider()) c.pitch_level_check_deg = s.pitch_alignment_sigma_deg;
   c.created_at = now;
   store.addConfiguration(c);
 }

@@ -83,7 +83,7 @@ TEST_F(ExportTest, JsonHoldsEveryRecordInTimeOrder) {
   fill(store);
   const auto j = exportHistoryJson(store, "sys-0-0");
   EXPECT_EQ(j["format"], "auvballast-history");
-  EXPECT_EQ(j["schema_version"], 4);
+  EXPECT_EQ(j["schema_version"], 5);
   EXPECT_EQ(j["configuration"]["payload_note"].get<std::string>().find("line break") != std::string::npos, true);
   const auto& ev = j["events"];
   ASSERT_EQ(ev.size(), 7u);

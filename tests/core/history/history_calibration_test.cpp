@@ -1,6 +1,8 @@
 // historyCalibrationMissions (core/workflow/history_calibration.h): the
 // configuration's latest analysed mission read back as a calibration
-// experiment, with the sensor biases its analysis had taken out.
+// experiment, with the sensor biases its analysis had taken out; and
+// addConfigurationHistory, which also takes the configuration's roll test
+// and pitch sensor level check into the analysis's options.
 #include <gtest/gtest.h>
 
 #include "analysis/steady_segment_json.h"
@@ -74,6 +76,34 @@ TEST_F(HistoryCalibration, ADamagedBiasIsRefusedByName) {
     EXPECT_NE(std::string(e.what()).find("attitude_bias_removed_deg.pitch"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("history analysis #"), std::string::npos) << e.what();
   }
+}
+
+// The configuration's dock level check becomes the prior on the pitch
+// sensor's bias, its roll test the BG; a configuration without them leaves
+// the analysis's defaults (1 deg, BG free).
+TEST_F(HistoryCalibration, TheConfigurationsLevelCheckAndRollTestBecomeTheAnalysissPriors) {
+  HistoryStore store(db_path);
+  storeAnalysis(store, nlohmann::json::object());
+  analysis::AnalysisOptions plain;
+  plain.log_name = "second.csv";
+  addConfigurationHistory(store, "7-1-1", hugin1000, t0 + std::chrono::hours(1), plain);
+  EXPECT_EQ(plain.pitch_alignment_sigma_deg, analysis::AnalysisOptions{}.pitch_alignment_sigma_deg);
+  EXPECT_FALSE(plain.bg_m);
+  EXPECT_EQ(plain.history.size(), 1u);
+
+  store.setConfigurationPitchLevelCheck("7-1-1", 0.15);
+  store.setConfigurationBg("7-1-1", 23.0);
+  analysis::AnalysisOptions checked;
+  checked.log_name = "second.csv";
+  addConfigurationHistory(store, "7-1-1", hugin1000, t0 + std::chrono::hours(1), checked);
+  EXPECT_DOUBLE_EQ(checked.pitch_alignment_sigma_deg, 0.15);
+  ASSERT_TRUE(checked.bg_m);
+  EXPECT_DOUBLE_EQ(*checked.bg_m, 0.023);
+  // A BG the caller measured stays.
+  analysis::AnalysisOptions given;
+  given.bg_m = 0.030;
+  addConfigurationHistory(store, "7-1-1", hugin1000, t0 + std::chrono::hours(1), given);
+  EXPECT_DOUBLE_EQ(*given.bg_m, 0.030);
 }
 
 }  // namespace

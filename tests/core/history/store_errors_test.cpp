@@ -51,7 +51,7 @@ TEST_F(HistoryOpenTest, NewerSchemaIsRefusedAndLeftAlone) {
   const std::string before = sha256OfFile(db_path);
   const std::string msg = openError(db_path);
   EXPECT_TRUE(contains(msg, db_path)) << msg;
-  EXPECT_TRUE(contains(msg, "newer auvballast (schema version 7; this program knows up to 4)")) << msg;
+  EXPECT_TRUE(contains(msg, "newer auvballast (schema version 7; this program knows up to 5)")) << msg;
   EXPECT_TRUE(contains(msg, "update auvballast")) << msg;
   EXPECT_EQ(sha256OfFile(db_path), before);
 }
@@ -89,7 +89,7 @@ TEST_F(HistoryOpenTest, OlderSchemaIsMigratedKeepingTheData) {
               0);
   }
   HistoryStore store(db_path);
-  EXPECT_EQ(store.schemaVersion(), 4);
+  EXPECT_EQ(store.schemaVersion(), latestSchemaVersion());
   const auto s = store.lastState("1-2-3", makeUtc(2014, 4, 5));
   ASSERT_TRUE(s && s->last_temperature);
   EXPECT_DOUBLE_EQ(*s->last_temperature->temperature_degC, 6.545581);
@@ -113,7 +113,7 @@ TEST_F(HistoryOpenTest, SchemaThreeGainsBgKeepingEveryRecord) {
     EXPECT_EQ(old.database().queryInt("SELECT count(*) FROM pragma_table_info('configurations') WHERE name = 'bg_mm'"), 0);
   }
   HistoryStore store(db_path);
-  EXPECT_EQ(store.schemaVersion(), 4);
+  EXPECT_EQ(store.schemaVersion(), latestSchemaVersion());
   auto c = store.configuration("02-01-01");
   ASSERT_TRUE(c);
   EXPECT_EQ(c->payload_note, "HISAS");
@@ -141,22 +141,72 @@ TEST_F(HistoryOpenTest, SchemaThreeGainsBgKeepingEveryRecord) {
   EXPECT_EQ(store.integrityCheck(), "ok");
 }
 
+// A history written before the pitch sensor's level check was a
+// configuration field (schema 4) opens with its BG kept and the check "not
+// checked"; then the check is kept, refused outside 0..5 deg, and cleared.
+TEST_F(HistoryOpenTest, SchemaFourGainsThePitchLevelCheckKeepingBg) {
+  const std::vector<Migration> up_to_v4(standardMigrations().begin(), standardMigrations().begin() + 4);
+  {
+    HistoryStore old(db_path, up_to_v4);
+    ASSERT_EQ(old.schemaVersion(), 4);
+    Configuration c = hugin("02-01-01", makeUtc(2014, 4, 4, 15, 28));
+    c.bg_mm = 21.5;
+    c.pitch_level_check_deg = 0.1;  // this file has no place for it: not stored
+    old.addConfiguration(c);
+    EXPECT_DOUBLE_EQ(*old.configuration("02-01-01")->bg_mm, 21.5);
+    EXPECT_FALSE(old.configuration("02-01-01")->pitch_level_check_deg);
+  }
+  HistoryStore store(db_path);
+  EXPECT_EQ(store.schemaVersion(), 5);
+  EXPECT_DOUBLE_EQ(*store.configuration("02-01-01")->bg_mm, 21.5);
+  EXPECT_FALSE(store.configuration("02-01-01")->pitch_level_check_deg);  // not checked before
+
+  store.setConfigurationPitchLevelCheck("02-01-01", 0.1);
+  EXPECT_DOUBLE_EQ(*store.configuration("02-01-01")->pitch_level_check_deg, 0.1);
+  for (const double bad : {0.0, -0.2, 7.0}) {
+    try {
+      store.setConfigurationPitchLevelCheck("02-01-01", bad);
+      ADD_FAILURE() << "a level check of " << bad << " deg was stored";
+    } catch (const InputError& e) {
+      EXPECT_TRUE(contains(e.what(), "pitch sensor level check")) << e.what();
+      EXPECT_TRUE(contains(e.what(), "0..5 deg")) << e.what();
+    }
+  }
+  EXPECT_DOUBLE_EQ(*store.configuration("02-01-01")->pitch_level_check_deg, 0.1);  // unchanged by the refusals
+  EXPECT_DOUBLE_EQ(*store.configuration("02-01-01")->bg_mm, 21.5);
+  store.setConfigurationPitchLevelCheck("02-01-01", std::nullopt);
+  EXPECT_FALSE(store.configuration("02-01-01")->pitch_level_check_deg);
+
+  // A new configuration keeps both from the start.
+  Configuration n = hugin("02-01-02", makeUtc(2014, 5, 1));
+  n.bg_mm = 19.0;
+  n.pitch_level_check_deg = 0.25;
+  store.addConfiguration(n);
+  EXPECT_DOUBLE_EQ(*store.configuration("02-01-02")->bg_mm, 19.0);
+  EXPECT_DOUBLE_EQ(*store.configuration("02-01-02")->pitch_level_check_deg, 0.25);
+  Configuration bad = hugin("02-01-03", makeUtc(2014, 5, 1));
+  bad.pitch_level_check_deg = 9.0;
+  EXPECT_THROW(store.addConfiguration(bad), InputError);
+  EXPECT_FALSE(store.configuration("02-01-03"));  // nothing half-written
+  EXPECT_EQ(store.integrityCheck(), "ok");
+}
+
 TEST_F(HistoryOpenTest, FailedMigrationLeavesTheFileByteIdentical) {
   {
     HistoryStore old(db_path, {standardMigrations().front()});
     old.addConfiguration(hugin("1-2-3", makeUtc(2014, 4, 4, 15, 28)));
   }
   const std::string before = sha256OfFile(db_path);
-  // Steps 2 to 4 (real) and 5 (injected: writes, then fails) are pending.
+  // Steps 2 to 5 (real) and 6 (injected: writes, then fails) are pending.
   std::vector<Migration> steps = standardMigrations();
-  steps.push_back({5, "injected failure", [](Database& db) {
+  steps.push_back({6, "injected failure", [](Database& db) {
                      db.exec("CREATE TABLE half_done(x); INSERT INTO half_done VALUES (1);",
                              "test step");
                      throw std::runtime_error("injected failure after a partial write");
                    }});
   const std::string msg = openError(db_path, &steps);
   EXPECT_TRUE(contains(msg, db_path)) << msg;
-  EXPECT_TRUE(contains(msg, "from schema version 1 to 5: step 5 (injected failure) failed")) << msg;
+  EXPECT_TRUE(contains(msg, "from schema version 1 to 6: step 6 (injected failure) failed")) << msg;
   EXPECT_TRUE(contains(msg, "left exactly as it was")) << msg;
   EXPECT_EQ(sha256OfFile(db_path), before);
 
@@ -169,7 +219,7 @@ TEST_F(HistoryOpenTest, FailedMigrationLeavesTheFileByteIdentical) {
   EXPECT_EQ(sha256OfFile(db_path), before);
 
   HistoryStore store(db_path);  // the real program still opens and upgrades it
-  EXPECT_EQ(store.schemaVersion(), 4);
+  EXPECT_EQ(store.schemaVersion(), latestSchemaVersion());
   EXPECT_EQ(store.database().queryInt(
                 "SELECT count(*) FROM sqlite_schema WHERE name IN ('half_done', 'ok_part')"),
             0);

@@ -16,7 +16,7 @@ class HistoryStoreTest : public test::StoreTest {};
 TEST_F(HistoryStoreTest, NewFileIsMigratedWithDurabilitySettings) {
   HistoryStore store(db_path);
   EXPECT_EQ(store.schemaVersion(), latestSchemaVersion());
-  EXPECT_EQ(store.schemaVersion(), 4);
+  EXPECT_EQ(store.schemaVersion(), 5);
   Database& db = store.database();
   EXPECT_EQ(db.queryText("PRAGMA journal_mode"), "wal");
   EXPECT_EQ(db.queryInt("PRAGMA foreign_keys"), 1);
