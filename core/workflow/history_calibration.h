@@ -29,8 +29,9 @@ std::vector<analysis::HistoryMission> historyCalibrationMissions(HistoryStore& s
 // installed state unless a.installed_kg is given, the configuration's BG
 // from its roll test unless a.bg_m is given, its pitch sensor level check
 // as a.pitch_alignment_sigma_deg (a caller with its own value sets it
-// after), and the calibration experiment above (a.log_name is the log about to be analysed). Throws
-// InputError naming the store when the configuration is not in it.
+// after), and the calibration experiment above (a.log_name is the log
+// about to be analysed). Throws InputError naming the store when the
+// configuration is not in it.
 void addConfigurationHistory(HistoryStore& store, const std::string& config_id, const VehicleProfile& v, TimePoint now,
                              analysis::AnalysisOptions& a);
 
