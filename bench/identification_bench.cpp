@@ -18,7 +18,13 @@
 // --pitch-alignment-sigma DEG: the analysis's prior on the sensor's bias
 // (default 1; 0 = the pitch read as true). --pitch-bias DEG: every
 // mission's pitch sensor reads DEG too high, as in
-// hugin_concealed_bench's pitch-bias case; --sigma-factor K: k of the
+// hugin_concealed_bench's pitch-bias case; --level-check DEG: the sensor
+// was level-checked within +-DEG (the configuration's pitch_level_check_deg):
+// each truth's bias is drawn uniformly in that tolerance and the analysis's
+// prior is DEG (it replaces the two flags before); --analysis-knows-truth R:
+// the diagnostic that gives the analysis and the plans each truth's own
+// hydrodynamics with a relative prior sigma R (what still misses is the
+// analysis's model structure, not its coefficients); --sigma-factor K: k of the
 // plans' safety margin, default 1.645; --dump SEED PREFIX writes one
 // truth's logs and first report for the CLI and the wizard)
 #include <algorithm>
@@ -148,9 +154,19 @@ int main(int argc, char** argv) {
   int truths = 50;
   std::uint64_t seed = 1100;
   bool loop = true, timing = true, verbose = false, fly_manoeuvre = false;
-  double log_interval_s = 1.0, pitch_bias_deg = 0.0, alignment_sigma_deg = 1.0, sigma_factor = PreMissionInput{}.sigma_factor;
+  double log_interval_s = 1.0, pitch_bias_deg = 0.0, level_check_deg = 0.0, knows_truth = 0.0, alignment_sigma_deg = 1.0, sigma_factor = PreMissionInput{}.sigma_factor;
   bool transients = false;
   int model_checks = 0;
+  auto configure = [&](identification::Harness& h) {
+    h.log_interval_s = log_interval_s;
+    h.use_transients = transients;
+    h.fly_manoeuvre = fly_manoeuvre;
+    h.sigma_factor = sigma_factor;
+    h.concealed.pitch_bias_deg = pitch_bias_deg;
+    h.pitch_alignment_sigma_deg = alignment_sigma_deg;
+    h.level_check_deg = level_check_deg;
+    h.analysis_knows_truth_rel_sigma = knows_truth;
+  };
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--truths" && i + 1 < argc) truths = std::atoi(argv[++i]);
@@ -163,6 +179,8 @@ int main(int argc, char** argv) {
     else if (a == "--transients") transients = true;
     else if (a == "--pitch-bias" && i + 1 < argc) pitch_bias_deg = std::atof(argv[++i]);  // a concealed sensor bias
     else if (a == "--pitch-alignment-sigma" && i + 1 < argc) alignment_sigma_deg = std::atof(argv[++i]);  // 0: read as true
+    else if (a == "--level-check" && i + 1 < argc) level_check_deg = std::atof(argv[++i]);  // a bias within +-DEG, known
+    else if (a == "--analysis-knows-truth" && i + 1 < argc) knows_truth = std::atof(argv[++i]);
     else if (a == "--sigma-factor" && i + 1 < argc) sigma_factor = std::atof(argv[++i]);  // k of the plans' margin
     else if (a == "--model-check" && i + 1 < argc) model_checks = std::atoi(argv[++i]);
     else if (a == "--truth-doc" && i + 2 < argc) {  // --truth-doc SEED FILE: the truth's hydrodynamics companion
@@ -171,30 +189,20 @@ int main(int argc, char** argv) {
       return 0;
     }
     else if (a == "--dump" && i + 2 < argc) {  // --dump SEED PREFIX: logs and reports of one truth (first; -2: second, joint)
-      // The flags given before it apply (--fly-manoeuvre, --log-interval, --transients, --pitch-bias, --pitch-alignment-sigma).
+      // The flags given before it apply (--fly-manoeuvre, --log-interval, --transients, --pitch-bias, --pitch-alignment-sigma, --level-check, --analysis-knows-truth, --sigma-factor).
       identification::Harness h;
-      h.concealed.pitch_bias_deg = pitch_bias_deg;
-      h.pitch_alignment_sigma_deg = alignment_sigma_deg;
-      h.log_interval_s = log_interval_s;
-      h.use_transients = transients;
-      h.fly_manoeuvre = fly_manoeuvre;
-      h.sigma_factor = sigma_factor;
+      configure(h);
       const auto r = h.run(std::strtoull(argv[i + 1], nullptr, 10), true, argv[i + 2]);
       std::printf("%s\n", r.truth.describe().c_str());
       return 0;
     }
     else {
-      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre] [--pitch-bias DEG] [--pitch-alignment-sigma DEG] [--sigma-factor K] [--model-check N] [--dump SEED PREFIX]\n");
+      std::fprintf(stderr, "usage: identification_bench [--truths N] [--seed S] [--no-loop] [--no-timing] [--verbose] [--log-interval S] [--transients] [--fly-manoeuvre] [--pitch-bias DEG] [--pitch-alignment-sigma DEG] [--level-check DEG] [--analysis-knows-truth R] [--sigma-factor K] [--model-check N] [--dump SEED PREFIX]\n");
       return 2;
     }
   }
   identification::Harness h;
-  h.log_interval_s = log_interval_s;
-  h.use_transients = transients;
-  h.fly_manoeuvre = fly_manoeuvre;
-  h.sigma_factor = sigma_factor;
-  h.concealed.pitch_bias_deg = pitch_bias_deg;
-  h.pitch_alignment_sigma_deg = alignment_sigma_deg;
+  configure(h);
   std::vector<double> en, ex, ey, en2, ex2, zn, zx;  // zn, zx: |error| / sigma
   int flagged = 0, light = 0, heavy = 0, porpoise = 0, flagged_miss2 = 0, clean = 0, clean_spec2 = 0;
   std::vector<double> droll1, dpitch1;  // |flown after one move - the plan's prediction|
@@ -211,8 +219,8 @@ int main(int argc, char** argv) {
   for (int i = 0; i < truths; ++i) {
     const identification::CaseResult r = h.run(seed + static_cast<std::uint64_t>(i), loop);
     if (verbose)
-      std::printf("%s | %d speeds %d depths | net %+.3f (s %.3f) x %+.2f (s %.2f) mm y %+.3f (s %.3f) mm%s\n",
-                  r.truth.describe().c_str(), r.speeds, r.depths, r.net_err_kg, r.net_sigma_kg, r.x_err_mm,
+      std::printf("%s | pitch sensor %+.2f deg | %d speeds %d depths | net %+.3f (s %.3f) x %+.2f (s %.2f) mm y %+.3f (s %.3f) mm%s\n",
+                  r.truth.describe().c_str(), r.pitch_bias_deg, r.speeds, r.depths, r.net_err_kg, r.net_sigma_kg, r.x_err_mm,
                   r.x_sigma_mm, r.y_err_mm, r.y_sigma_mm,
                   r.looped ? (std::string(" | log speeds ") + std::to_string(r.log_rpms.size()) + " | plan band " +
                               std::to_string(r.plan_band_lo_kg) + ".." + std::to_string(r.plan_band_hi_kg) +

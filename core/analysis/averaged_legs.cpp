@@ -245,4 +245,19 @@ std::optional<BalanceRegressors> cycleRegressors(const MissionLog& log, const Ti
   return BalanceRegressors{sum.cc * k, sum.sin_theta * k, sum.au_w * k, sum.u_w * k, sum.aw_w * k, sum.au_u * k, sum.au_u_e * k};
 }
 
+void averageOverCycles(const MissionLog& log, const Segment& leg, const TimeSeries& depth_rate, const TimeSeries& fast_rate,
+                       SteadySegmentMeans& m) {
+  const std::span<const double> b = leg.cycle_bounds_s;
+  auto over = [&](const char* channel, MeanEstimate& e) {
+    if (log.has(channel)) e = cycleMean(log.series(channel), b);
+  };
+  over("speed", m.speed_mps);
+  over("pitch", m.pitch_deg);
+  over("roll", m.roll_deg);
+  over("elevator", m.elevator_deg);
+  over("prop_rpm", m.prop_rpm);
+  m.depth_rate_mps = cycleMean(depth_rate, b);
+  if (log.has("pitch") && log.has("speed")) m.regressors = cycleRegressors(log, fast_rate, b);
+}
+
 }  // namespace auv::analysis

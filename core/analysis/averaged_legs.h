@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "analysis/auv_steady_model.h"
+#include "analysis/auv_trim_estimation.h"
 #include "analysis/segments.h"
 #include "analysis/statistics.h"
 
@@ -49,5 +50,14 @@ MeanEstimate cycleMean(const TimeSeries& s, std::span<const double> bounds);
 // (roll 0 without `roll`, elevator 0 without `elevator`). nullopt without samples.
 std::optional<BalanceRegressors> cycleRegressors(const MissionLog& log, const TimeSeries& depth_rate,
                                                  std::span<const double> bounds);
+
+// An averaged leg's means over its whole oscillation cycles, with the
+// cycle-to-cycle spread as their standard errors. The cycle products need a
+// depth rate that follows the cycle (`fast_rate`, SegmentOptions::
+// cycle_rate_window_s; docs/decisions/analysis-segments.md): w from a
+// flattened z_dot swings with the whole u sin(theta), and |w| w reads that
+// swing as lift. The means take the segments' `depth_rate`.
+void averageOverCycles(const MissionLog& log, const Segment& leg, const TimeSeries& depth_rate, const TimeSeries& fast_rate,
+                       SteadySegmentMeans& m);
 
 }  // namespace auv::analysis

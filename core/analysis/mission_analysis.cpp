@@ -67,22 +67,6 @@ struct WindowStats {
   MeanEstimate at(std::size_t w) const { return per[w].result(); }
 };
 
-// An averaged leg's means over its whole oscillation cycles, with the
-// cycle-to-cycle spread as their standard errors (averaged_legs.h).
-void averageOverCycles(const MissionLog& log, const Segment& leg, const TimeSeries& depth_rate, SteadySegmentMeans& m) {
-  const std::span<const double> b = leg.cycle_bounds_s;
-  auto over = [&](const char* channel, MeanEstimate& e) {
-    if (log.has(channel)) e = cycleMean(log.series(channel), b);
-  };
-  over("speed", m.speed_mps);
-  over("pitch", m.pitch_deg);
-  over("roll", m.roll_deg);
-  over("elevator", m.elevator_deg);
-  over("prop_rpm", m.prop_rpm);
-  m.depth_rate_mps = cycleMean(depth_rate, b);
-  if (log.has("pitch") && log.has("speed")) m.regressors = cycleRegressors(log, depth_rate, b);
-}
-
 void simpleStats(const MissionLog& log, const char* channel, const std::vector<Segment>& win, WindowStats& st) {
   if (!log.has(channel)) return;
   const TimeSeries s = log.series(channel);
@@ -154,6 +138,7 @@ AnalysisReport detail::analyzeRecordedLog(const MissionLog& log, const VehiclePr
   // --- per-window statistics, one channel at a time --------------------------
   WindowStats zS(nw), zRate(nw), dErr(nw), pitch(nw), pErr(nw), roll(nw), speed(nw), rpm(nw), elev(nw);
   const TimeSeries depthRate{depth.t, localRate(depth, so.rate_window_s, so.max_gap_s)};
+  const TimeSeries depthRateFast{depth.t, localRate(depth, so.cycle_rate_window_s, so.max_gap_s)};
   // An AUV's steady dives and climbs (averaged_legs.h) feed the estimation,
   // not the depth and pitch errors at steady depth.
   auto atDepth = [&](std::size_t w) { return glider || win[w].kind != SegmentKind::kGlide; };
@@ -261,7 +246,7 @@ AnalysisReport detail::analyzeRecordedLog(const MissionLog& log, const VehiclePr
       means[w] = {win[w].start_s, win[w].end_s, speed.at(w), pitch.at(w), roll.at(w), elev.at(w), zRate.at(w), rpm.at(w)};
       means[w].thruster_rpm = thrusterRpm[w];
       means[w].glide = win[w].kind == SegmentKind::kGlide;
-      if (win[w].averaged()) averageOverCycles(log, win[w], depthRate, means[w]);
+      if (win[w].averaged()) averageOverCycles(log, win[w], depthRate, depthRateFast, means[w]);
       if (perWindowWater && std::isfinite(water.win_rho[w])) {
         const double Ti = std::isfinite(water.win_T[w]) ? water.win_T[w] : Tref;
         const double pi = std::isfinite(water.win_p[w]) ? water.win_p[w] : pref;

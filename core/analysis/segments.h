@@ -46,6 +46,9 @@ struct SegmentOptions {
   double surface_depth_m = 1.0;      // shallower = at the surface
   double surface_hysteresis_m = 0.5;  // must go this much deeper to leave the surface
   double rate_window_s = 20.0;       // boxcar width of the depth rate
+  // The depth rate inside an averaged leg's cycle products (averaged_legs.h):
+  // short enough to follow a limit cycle of 15-20 s.
+  double cycle_rate_window_s = 4.0;
   double dive_rate_mps = 0.05;       // |depth rate| above this enters dive/climb
   double level_rate_mps = 0.02;      // |depth rate| below this enters level
   double min_phase_s = 30.0;         // shorter phases are merged into a neighbour

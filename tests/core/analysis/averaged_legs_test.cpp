@@ -9,6 +9,7 @@
 
 #include "analysis/averaged_legs.h"
 #include "analysis/segments.h"
+#include "analysis/series_tools.h"
 #include "analysis/steady_segment_json.h"
 #include "common/input_error.h"
 #include "log_builder.h"
@@ -88,6 +89,56 @@ TEST(AveragedLegs, TheCycleMeansOfTheBalanceProductsAreNotTheProductsOfTheMeans)
   // |w| w of a swing about a small mean is far from |w_mean| w_mean.
   const double w_mean = u * std::tan(kPitch0_deg * d2r);
   EXPECT_GT(std::abs(r->aw_w - std::abs(w_mean) * w_mean), 2.0 * std::abs(w_mean) * std::abs(w_mean));
+}
+
+// A fast limit cycle (truth 1145 of the identification bench: 18.5 s, pitch
+// +-12 deg at 148 rpm): the angle of attack swings a little while u sin(theta)
+// and the climb rate swing a lot and cancel. The cycle products must take the
+// climb rate that follows the cycle; the means' 20 s rate flattens it, and
+// |w| w then carries the whole u sin(theta) swing (there: 1.7 kg of net
+// buoyancy read into cross-flow lift).
+TEST(AveragedLegs, TheCycleProductsFollowTheAngleOfAttackThroughAFastLimitCycle) {
+  constexpr double period_s = 18.5, u = 1.8, d2r = std::numbers::pi / 180.0;
+  constexpr double th0 = -2.0 * d2r, th_amp = 12.0 * d2r, w0 = -0.055, w_amp = 0.08, w_lead = 1.1;
+  const double om = 2.0 * std::numbers::pi / period_s;
+  auto theta = [&](double t) { return th0 + th_amp * std::sin(om * t); };
+  auto wOf = [&](double t) { return w0 + w_amp * std::sin(om * t + w_lead); };
+  // Depth from the kinematics z_dot = -u sin(theta) + w cos(theta), integrated finely.
+  MissionLog log = makeLog(0.0, 40.0 * period_s, 1.0);
+  std::vector<double> depth(log.time.size());
+  double z = 30.0, t = 0.0;
+  constexpr double dt = 1e-3;
+  for (std::size_t i = 0; i < log.time.size(); ++i) {
+    for (; t < log.time[i] - 0.5 * dt; t += dt) {
+      const double tm = t + 0.5 * dt;
+      z += dt * (-u * std::sin(theta(tm)) + wOf(tm) * std::cos(theta(tm)));
+    }
+    depth[i] = z;
+  }
+  std::mt19937 rng(11);
+  std::normal_distribution<double> n01;
+  fill(log, "depth", "m", [&](std::size_t i, double) { return depth[i] + 0.01 * n01(rng); });
+  fill(log, "pitch", "deg", [&](std::size_t, double tt) { return theta(tt) / d2r + 0.05 * n01(rng); });
+  fill(log, "speed", "m/s", [&](std::size_t, double) { return u; });
+  fill(log, "elevator", "deg", [&](std::size_t, double) { return -2.0; });
+  std::vector<double> bounds;
+  for (int k = 2; k <= 38; ++k) bounds.push_back(k * period_s);
+  // Oracle: the mean of |w| w over one period by quadrature.
+  double aw_w = 0.0;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i) {
+    const double w = wOf((i + 0.5) * period_s / n);
+    aw_w += std::abs(w) * w / n;
+  }
+  const TimeSeries d = log.series("depth");
+  const SegmentOptions o;
+  const auto fast = cycleRegressors(log, {d.t, localRate(d, o.cycle_rate_window_s, o.max_gap_s)}, bounds);
+  const auto slow = cycleRegressors(log, {d.t, localRate(d, o.rate_window_s, o.max_gap_s)}, bounds);
+  ASSERT_TRUE(fast && slow);
+  EXPECT_NEAR(fast->aw_w, aw_w, 0.15 * std::abs(aw_w)) << "oracle " << aw_w;
+  EXPECT_NEAR(fast->u_w, u * w0, 0.05 * std::abs(u * w0));
+  // The control: the means' rate reads the swing of u sin(theta) as angle of attack.
+  EXPECT_GT(std::abs(slow->aw_w - aw_w), 1.0 * std::abs(aw_w)) << "slow " << slow->aw_w << " oracle " << aw_w;
 }
 
 TEST(AveragedLegs, ASteadyLegKeepsItsSteadyWindows) {

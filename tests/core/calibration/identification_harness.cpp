@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <random>
 
 #include "missionlog/interchange_csv.h"
 
@@ -25,11 +26,13 @@ namespace {
 
 const std::string kResources = AUV_RESOURCE_DIR;
 
-VehicleProfile nominalProfile() {
+nlohmann::json nominalCompanion() { return JsonReader::parseFile(kResources + "/sim/hugin1000_hydrodynamics.json"); }
+
+// The profile with a companion's sections, as the catalog merges them
+// (vehicle_catalog.cpp), autopilot included.
+VehicleProfile profileWith(const nlohmann::json& companion) {
   VehicleProfile p = loadVehicleProfile(kResources + "/vehicles/hugin1000.json");
-  const nlohmann::json doc = JsonReader::parseFile(kResources + "/sim/hugin1000_hydrodynamics.json");
-  // As the catalog merges the companion (vehicle_catalog.cpp), autopilot included.
-  for (const char* k : {"hydrodynamics", "actuators", "sim_assumptions", "autopilot"}) p.sections[k] = doc[k];
+  for (const char* k : {"hydrodynamics", "actuators", "sim_assumptions", "autopilot"}) p.sections[k] = companion[k];
   return p;
 }
 
@@ -68,8 +71,10 @@ Flown fly(const sim::VehicleModel& truth, const sim::DepthAutopilotConfig& ap, c
 }
 
 analysis::AnalysisReport analyse(const Flown& f, const VehicleProfile& p, const std::vector<double>& installed,
-                                 bool transients, double pitch_alignment_sigma_deg) {
+                                 bool transients, double pitch_alignment_sigma_deg,
+                                 std::optional<double> coefficient_rel_sigma) {
   analysis::AnalysisOptions a;
+  a.coefficient_rel_sigma = coefficient_rel_sigma;
   a.use_transients = transients;
   a.pitch_alignment_sigma_deg = pitch_alignment_sigma_deg;
   a.log_name = "identification";
@@ -134,7 +139,7 @@ bool appendManoeuvre(const nlohmann::json& manoeuvre, double op_depth_m, sim::Su
 }  // namespace
 
 Harness::Harness()
-    : profile_(nominalProfile()),
+    : profile_(profileWith(nominalCompanion())),
       nominal_(sim::loadSimVehicle(loadVehicleProfile(kResources + "/vehicles/hugin1000.json"), kResources)) {}
 
 CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string& dump_prefix) const {
@@ -145,17 +150,32 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   const sim::SurveyMission m = sim::makeSurveyMission(seed, ranges);
   r.speeds = static_cast<int>(m.rpms.size());
   r.depths = static_cast<int>(m.depths_m.size());
+  // With a level check, this truth's sensor sits anywhere within the
+  // checked tolerance, and the analysis is told that tolerance as its prior.
+  discrepancy::SyntheticAuvTruth effects = concealed;
+  double alignment_sigma_deg = pitch_alignment_sigma_deg;
+  if (level_check_deg > 0.0) {
+    std::mt19937_64 rng(seed ^ 0x5eed1e7e1ULL);
+    effects.pitch_bias_deg = std::uniform_real_distribution<double>(-level_check_deg, level_check_deg)(rng);
+    alignment_sigma_deg = level_check_deg;
+  }
+  r.pitch_bias_deg = effects.pitch_bias_deg;
+  // The diagnostic: the analysis told the truth's own hydrodynamics.
+  const bool told_truth = analysis_knows_truth_rel_sigma > 0.0;
+  const VehicleProfile told = told_truth ? profileWith(sim::truthHydrodynamicsDoc(nominalCompanion(), r.truth)) : profile_;
+  const std::optional<double> coefficient_sigma =
+      told_truth ? std::optional<double>(analysis_knows_truth_rel_sigma) : std::nullopt;
   sim::VehicleModel truth = sim::truthModel(nominal_.model, r.truth);
-  discrepancy::applyTruthEffects(truth, concealed);
+  discrepancy::applyTruthEffects(truth, effects);
   const std::vector<MassItem> installed = sim::installedWeights(profile_, kInstalled);
   // The drawn net buoyancy holds at the start of the mission.
   const sim::WaterSample w0 = m.water().at(m.scenario.initial_depth_m, 0.0);
   const double displaced0 = w0.density_kgm3 * truth.body.hull.volumeAt(w0.temperature_degC, w0.pressure_dbar);
   const sim::BallastError err = sim::truthBallastError(truth, installed, displaced0, r.truth);
-  const Flown f = fly(truth, nominal_.autopilot, m, installed, err, seed * 7 + 1, kInstalled, concealed);
+  const Flown f = fly(truth, nominal_.autopilot, m, installed, err, seed * 7 + 1, kInstalled, effects);
 
   const auto t0 = std::chrono::steady_clock::now();
-  const analysis::AnalysisReport rep = analyse(f, profile_, kInstalled, use_transients, pitch_alignment_sigma_deg);
+  const analysis::AnalysisReport rep = analyse(f, told, kInstalled, use_transients, alignment_sigma_deg, coefficient_sigma);
   r.analysis_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // Through the JSON contract, so the harness also measures code from before the calibration.
   const nlohmann::json rj = analysis::toJson(rep);
@@ -227,7 +247,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
     in.next.salinity_sigma_psu = 0.05;
     in.policy = PlanPolicy::Exact;
     in.use_optional_pieces = true;
-    const PreMissionPlan plan = planPreMission(profile_, in);
+    const PreMissionPlan plan = planPreMission(told, in);
     std::vector<double> after = installed_now;
     for (std::size_t i = 0; i < after.size(); ++i)
       after[i] = std::round((after[i] + plan.points[i].add_kg) * 1e4) / 1e4;
@@ -265,7 +285,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
     o.net_op_kg = resolvePoint(profile_.hull, next).displaced_kg - fl.mass_kg;
     o.min_net_kg = fl.min_net_kg;
     // The attitude the vehicle flies: a biased sensor's reading less its bias.
-    o.pitch_deg = cruisePitchDeg(rp, *std::max_element(m.rpms.begin(), m.rpms.end())) - concealed.pitch_bias_deg;
+    o.pitch_deg = cruisePitchDeg(rp, *std::max_element(m.rpms.begin(), m.rpms.end())) - effects.pitch_bias_deg;
     o.roll_deg = rp.cruise_roll_deg.known ? rp.cruise_roll_deg.value : rp.roll_deg.mean;
     o.roll_reach_deg = units::radToDeg(std::atan(0.5 * y_point / (fl.mass_kg * fl.bg_m)));
     o.net_ok = o.net_op_kg >= s.net_buoyancy_min_kg && o.net_op_kg <= s.net_buoyancy_max_kg;
@@ -296,7 +316,7 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
     r.manoeuvre_flight = plan.calibration_manoeuvre->at("flight");
   sim::SurveyMission m2m = m2;
   if (fly_manoeuvre && plan.calibration_manoeuvre) r.manoeuvre_flown = appendManoeuvre(*plan.calibration_manoeuvre, op_depth, m2m);
-  const Flown f2 = fly(truth, nominal_.autopilot, m2m, sim::installedWeights(profile_, after), err, seed * 7 + 2, after, concealed);
+  const Flown f2 = fly(truth, nominal_.autopilot, m2m, sim::installedWeights(profile_, after), err, seed * 7 + 2, after, effects);
   if (!dump_prefix.empty()) writeInterchangeCsv(f2.log, dump_prefix + "-2.csv");
   // Mission 2 analysed with mission 1 as history (the known move calibrates).
   analysis::AnalysisOptions a2;
@@ -305,8 +325,9 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   a2.bg_m = f2.bg_m;
   a2.history = {analysis::historyMissionOf(rep, kInstalled)};
   a2.use_transients = use_transients;
-  a2.pitch_alignment_sigma_deg = pitch_alignment_sigma_deg;
-  const analysis::AnalysisReport rep2 = analysis::analyzeMission(f2.log, profile_, a2);
+  a2.pitch_alignment_sigma_deg = alignment_sigma_deg;
+  a2.coefficient_rel_sigma = coefficient_sigma;
+  const analysis::AnalysisReport rep2 = analysis::analyzeMission(f2.log, told, a2);
   if (!dump_prefix.empty()) std::ofstream(dump_prefix + "-2.json") << analysis::toJson(rep2).dump(1) << "\n";
   r.looped = true;
   judge(f2, rep2, r.one);
@@ -319,8 +340,8 @@ CaseResult Harness::run(std::uint64_t seed, bool closed_loop, const std::string&
   const auto [plan2, after2] = planFrom(rj2, after);
   r.two.planned_roll_deg = plan2.predicted.roll_deg;
   r.two.planned_net_kg = plan2.predicted.net_buoyancy_kg;
-  const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2, concealed);
-  judge(f3, analyse(f3, profile_, after2, use_transients, pitch_alignment_sigma_deg), r.two);
+  const Flown f3 = fly(truth, nominal_.autopilot, m2, sim::installedWeights(profile_, after2), err, seed * 7 + 3, after2, effects);
+  judge(f3, analyse(f3, told, after2, use_transients, alignment_sigma_deg, coefficient_sigma), r.two);
   r.twice = true;
   r.net2_err_kg = rep2.net_buoyancy_kg.value - net2_truth;
   r.net2_sigma_kg = rep2.net_buoyancy_kg.sigma;

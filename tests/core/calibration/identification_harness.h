@@ -27,6 +27,7 @@ namespace auv::identification {
 struct CaseResult {
   sim::DrawnTruth truth;
   int speeds = 0, depths = 0;  // planned
+  double pitch_bias_deg = 0.0;  // the truth's pitch sensor bias (reading minus true)
   std::vector<double> log_rpms;  // distinct propeller speeds of the steady segments the analysis used
   bool known = false;  // net buoyancy and CG x identified
   double net_err_kg = 0.0, net_sigma_kg = 0.0;
@@ -80,6 +81,18 @@ class Harness {
   // The analysis's prior on the pitch sensor's alignment
   // (AnalysisOptions::pitch_alignment_sigma_deg; 0 = read as true).
   double pitch_alignment_sigma_deg = 1.0;
+  // A level check within +-level_check_deg (the configuration's
+  // pitch_level_check_deg): each truth's pitch sensor reads a bias drawn
+  // uniformly in that tolerance, and the analysis's prior is the tolerance
+  // (it replaces pitch_alignment_sigma_deg and concealed.pitch_bias_deg).
+  // 0: no level check.
+  double level_check_deg = 0.0;
+  // The diagnostic that separates model structure from coefficients: > 0
+  // gives the analysis and the plans the truth's own hydrodynamics
+  // (sim::truthHydrodynamicsDoc) with this relative prior sigma
+  // (AnalysisOptions::coefficient_rel_sigma) instead of the nominal profile.
+  // What still misses is what the analysis's model leaves out. 0: off.
+  double analysis_knows_truth_rel_sigma = 0.0;
   // The second mission also flies the calibration manoeuvre the first plan
   // asked for (details.calibration_manoeuvre.flight), as an operator told
   // to would; false: the survey lines only. Off by default: with the history
