@@ -94,6 +94,37 @@ TEST(AttitudeSensorBias, TheAnalysisFindsAnUnalignedPitchSensor) {
   EXPECT_EQ(called, 1);
 }
 
+// Identification truth 2126 with its sensor 0.14 deg low (the default prior,
+// 1 deg: no level check). Its five glides at +-15 deg see the bias to about
+// 0.01 deg. The search's grid once took the running minimum for J(0), so
+// J(-0.1) = J(0) and the parabola put the bias at -0.05; the glides, read
+// 0.09 deg off, failed their balance test (chi2 up to 19), the slow climb
+// that carries the cross-flow scale was dropped, and the net buoyancy sigma
+// went from 0.2 to 0.77 kg.
+TEST(AttitudeSensorBias, ASmallBiasIsFoundFinerThanTheGlidesSeeIt) {
+  Harness h;
+  h.concealed.pitch_bias_deg = -0.14;
+  int called = 0;
+  h.on_first_log = [&](const MissionLog&, const analysis::AnalysisReport& rep, double net_truth, double) {
+    ++called;
+    const analysis::CalibrationParameter* b = analysis::calibrationParameter(rep, "pitch_sensor_bias");
+    ASSERT_NE(b, nullptr);
+    EXPECT_NEAR(b->value, -0.14, 0.02);
+    int glides = 0;
+    for (const analysis::SegmentReport& s : rep.segments) {
+      glides += s.kind == analysis::SegmentKind::kGlide;
+      EXPECT_FALSE(s.calibration_dropped) << s.start_s << " .. " << s.end_s;
+    }
+    EXPECT_GE(glides, 5);
+    ASSERT_TRUE(rep.net_buoyancy_kg.known);
+    EXPECT_LT(rep.net_buoyancy_kg.sigma, 0.3);
+    EXPECT_LE(std::abs(rep.net_buoyancy_kg.value - net_truth), 2.0 * rep.net_buoyancy_kg.sigma)
+        << rep.net_buoyancy_kg.value << " +- " << rep.net_buoyancy_kg.sigma << " truth " << net_truth;
+  };
+  h.run(2126, false);
+  EXPECT_EQ(called, 1);
+}
+
 // Truth 5501 of hugin_concealed_bench's pitch-bias case: read as true, the
 // biased pitch put the net buoyancy several sigma off and named a thermal
 // expansion of 2e-4 1/degC the hull does not have. With the bias accepted
